@@ -1,0 +1,55 @@
+#pragma once
+// Feature lines: chains of sharp and boundary edges, resampled with local frames.
+// Symmetry detection pairs their samples to propose rigid transforms (paper 001 §4.1).
+
+#include "geometry/feature_edges.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace dg {
+
+/// Default corner angle in degrees: a chain is split where consecutive edges turn by more.
+inline constexpr double kDefaultCornerAngleDegrees = 30.0;
+
+/// A polyline of feature edges between two ends (corners, junctions, line ends) or a loop.
+struct FeatureLine {
+  std::vector<std::uint32_t> vertices;  ///< mesh vertex indices along the line
+  std::vector<Vec3> normals;            ///< unit surface normal per edge (vertices.size() - 1)
+  std::vector<double> dihedrals;        ///< signed dihedral angle per edge, degrees
+  bool closed = false;                  ///< last vertex connects back to the first
+  bool boundary = false;                ///< made of boundary edges (otherwise sharp/non-manifold)
+  double length = 0.0;                  ///< model units
+};
+
+/// What a sample offers for pairing with other samples; compared with tolerances.
+struct FeatureDescriptor {
+  double dihedral_degrees = 0.0;  ///< signed dihedral of the edge under the sample (0 on boundaries)
+  double curvature = 0.0;         ///< turning angle per unit length of the line near the sample (rad/unit)
+  bool boundary = false;          ///< lies on a boundary line
+};
+
+/// A point on a feature line with an orthonormal frame (tangent along the line, normal =
+/// surface normal made orthogonal to the tangent, binormal = tangent x normal).
+struct FeatureSample {
+  Vec3 position, tangent, normal, binormal;
+  std::uint32_t line = 0;  ///< index into FeatureLines::lines
+  FeatureDescriptor descriptor;
+};
+
+struct FeatureLines {
+  std::vector<FeatureLine> lines;
+  std::vector<FeatureSample> samples;
+
+  /// Sum of line lengths in model units.
+  double total_length() const;
+};
+
+/// Chains `features` (from find_feature_edges on the same welded mesh) into lines, split at
+/// junctions, at corners turning by more than `corner_angle_degrees`, and where boundary meets
+/// sharp edges; resamples each line at a spacing of about `spacing` model units (open lines get
+/// both end points). Deterministic: the result depends only on the inputs.
+FeatureLines extract_feature_lines(const TriangleMesh& mesh, const std::vector<FeatureEdge>& features, double spacing,
+                                   double corner_angle_degrees = kDefaultCornerAngleDegrees);
+
+}  // namespace dg

@@ -1,0 +1,28 @@
+#pragma once
+// Reading models (meshes and point clouds) and writing meshes, chosen by file extension.
+
+#include "geometry/mesh.h"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace dg {
+
+/// Reads OBJ, OFF, PLY (ascii/binary), STL (ascii/binary), glTF 2.0 (.gltf/.glb) and XYZ.
+/// Polygons are fan-triangulated; glTF instances of the default scene get their node transforms.
+/// A PLY without faces and an XYZ file give a point cloud. Positions are NOT welded here
+/// (see clean_mesh). Throws InputError naming the file and the problem (unreadable, unknown
+/// format, malformed, empty, NaN/inf coordinates).
+Model read_model(const std::filesystem::path& path);
+
+/// RGB colour per vertex, 0..255.
+using Rgb = std::array<std::uint8_t, 3>;
+
+/// Writes a mesh as OBJ, PLY (binary little endian) or glTF binary (.glb) chosen by the
+/// extension, atomically. `vertex_colors`, when given, has one colour per position (PLY and GLB
+/// store it; OBJ ignores it). Throws InputError for an unknown extension or unwritable path.
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh,
+                const std::vector<Rgb>* vertex_colors = nullptr);
+
+}  // namespace dg

@@ -1,0 +1,81 @@
+#include "geometry/prepared_model.h"
+
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace dg {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+void check_option(double value, const char* name) {
+  if (!std::isfinite(value) || value < 0.0)
+    throw InputError(std::string(name) + " must be a positive number of model units (0 or absent = default)");
+}
+
+}  // namespace
+
+PreparedModel prepare_model(const std::filesystem::path& path, const PrepareOptions& options,
+                            const ProgressCallback& progress) {
+  check_option(options.r, "-r");
+  check_option(options.eps, "--voxel");
+  Stopwatch clock;
+  report_progress(progress, "load", 0.0);
+  Model model = read_model(path);
+  const double load_seconds = clock.lap();
+  PreparedModel prepared = prepare_model(std::move(model), options, progress);
+  prepared.timings.insert(prepared.timings.begin(), {"load", load_seconds});
+  return prepared;
+}
+
+PreparedModel prepare_model(Model model, const PrepareOptions& options, const ProgressCallback& progress) {
+  check_option(options.r, "-r");
+  check_option(options.eps, "--voxel");
+  PreparedModel prepared;
+  Stopwatch clock;
+  const std::string name = model.source_path.empty() ? std::string("model") : model.source_path;
+  VoxelSurfaceOptions voxel_options;
+  voxel_options.r = options.r;
+  voxel_options.eps = options.eps;
+  try {
+    if (model.is_point_cloud()) {
+      prepared.cleaning = clean_point_cloud(model.cloud);
+      prepared.timings.push_back({"clean", clock.lap()});
+      prepared.surface = build_voxel_surface(model.cloud, voxel_options, progress);
+      prepared.timings.push_back({"voxel surface", clock.lap()});
+    } else {
+      prepared.cleaning = clean_mesh(model.mesh);
+      if (model.mesh.triangles.empty()) throw InputError("no triangles left after dropping degenerate ones");
+      prepared.timings.push_back({"clean", clock.lap()});
+      report_progress(progress, "feature lines", 0.0);
+      prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees);
+      const double r = options.r > 0.0 ? options.r : default_radius(model.mesh.bounds());
+      const double eps = options.eps > 0.0 ? options.eps : r / 4.0;
+      prepared.feature_lines =
+          extract_feature_lines(model.mesh, prepared.feature_edges, eps, options.corner_angle_degrees);
+      prepared.timings.push_back({"feature lines", clock.lap()});
+      prepared.surface = build_voxel_surface(model.mesh, prepared.feature_edges, voxel_options, progress);
+      prepared.timings.push_back({"voxel surface", clock.lap()});
+    }
+  } catch (const InputError& e) {
+    throw InputError(name + ": " + e.what());
+  }
+  prepared.model = std::move(model);
+  return prepared;
+}
+
+}  // namespace dg

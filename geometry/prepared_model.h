@@ -1,0 +1,47 @@
+#pragma once
+// One call from a model file to everything the 3D stages start from: the cleaned model,
+// its cleaning report, feature edges and lines, and the voxel surface, with stage timings.
+
+#include "geometry/cleaning.h"
+#include "geometry/feature_lines.h"
+#include "geometry/mesh.h"
+#include "geometry/progress.h"
+#include "geometry/voxel_surface.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dg {
+
+/// Wall-clock time of one named stage, seconds.
+struct StageTiming {
+  std::string stage;
+  double seconds = 0.0;
+};
+
+struct PrepareOptions {
+  double r = 0.0;    ///< similarity radius in model units; 0 = 1.6 % of the longest bounding-box side
+  double eps = 0.0;  ///< voxel size in model units; 0 = r / 4
+  double sharp_angle_degrees = kDefaultSharpAngleDegrees;    ///< dihedral angle of feature edges
+  double corner_angle_degrees = kDefaultCornerAngleDegrees;  ///< turning angle that splits feature lines
+};
+
+struct PreparedModel {
+  Model model;  ///< welded and cleaned
+  CleaningReport cleaning;
+  std::vector<FeatureEdge> feature_edges;  ///< empty for point clouds
+  FeatureLines feature_lines;              ///< empty for point clouds
+  VoxelSurface surface;
+  std::vector<StageTiming> timings;  ///< load, clean, feature lines, voxel surface
+};
+
+/// Loads, cleans, finds feature lines and builds the voxel surface of a model file.
+/// Throws InputError for unreadable/invalid files and impossible options (negative, NaN r).
+PreparedModel prepare_model(const std::filesystem::path& path, const PrepareOptions& options = {},
+                            const ProgressCallback& progress = {});
+
+/// The same for a model already in memory (source_path is used in messages only).
+PreparedModel prepare_model(Model model, const PrepareOptions& options = {}, const ProgressCallback& progress = {});
+
+}  // namespace dg

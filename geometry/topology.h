@@ -1,0 +1,30 @@
+#pragma once
+// Edge-based topology of an indexed triangle mesh: boundary and non-manifold edges,
+// orientation consistency, connected components.
+
+#include "geometry/mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace dg {
+
+/// Counts over the undirected edges of a mesh (edges identified by vertex indices).
+struct EdgeStatistics {
+  std::size_t edges = 0;               ///< distinct undirected edges
+  std::size_t boundary_edges = 0;      ///< used by exactly one triangle
+  std::size_t non_manifold_edges = 0;  ///< used by three or more triangles
+  std::size_t inconsistent_edges = 0;  ///< manifold edges whose two triangles traverse it the same way
+};
+
+/// Edge counts of a mesh; indices must already be welded for the counts to mean anything.
+EdgeStatistics edge_statistics(const TriangleMesh& mesh);
+
+/// True when every edge has exactly two triangles traversing it in opposite directions.
+bool is_closed_and_oriented(const TriangleMesh& mesh);
+
+/// Component id per triangle: triangles sharing a vertex index are connected; components are
+/// numbered in order of their lowest triangle index. Writes the number of components when asked.
+std::vector<std::uint32_t> triangle_components(const TriangleMesh& mesh, std::size_t* component_count = nullptr);
+
+}  // namespace dg

@@ -1,0 +1,40 @@
+#pragma once
+// Basic value types shared by every dockgrammar stage.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <limits>
+
+namespace dg {
+
+using Vec3 = Eigen::Vector3d;
+using Vec2 = Eigen::Vector2d;
+using Mat3 = Eigen::Matrix3d;
+using Mat4 = Eigen::Matrix4d;
+
+/// Indices of a triangle's three corners into a position array (counter-clockwise = front).
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// Axis-aligned box in model units; empty() until a point is added.
+struct BoundingBox {
+  Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+  /// Grows the box to contain p.
+  void add(const Vec3& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  /// True when no point was added.
+  bool empty() const { return !(min.x() <= max.x()); }
+  /// Edge lengths (zero vector when empty).
+  Vec3 size() const { return empty() ? Vec3::Zero() : Vec3(max - min); }
+  /// Longest edge length in model units.
+  double longest_side() const { return size().maxCoeff(); }
+  /// Length of the diagonal in model units.
+  double diagonal() const { return size().norm(); }
+};
+
+}  // namespace dg

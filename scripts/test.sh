@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what is needed, builds the test suite twice (optimized, and with AddressSanitizer +
+# UndefinedBehaviorSanitizer) and runs it in both builds.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+bash scripts/install-deps.sh
+export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/ccache}
+
+echo "== optimized build and tests" >&2
+bash scripts/build.sh build -DCMAKE_BUILD_TYPE=Release
+(cd build && ctest --output-on-failure -j "$(nproc)")
+
+echo "== sanitizer build (ASan + UBSan) and tests" >&2
+bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDOCKGRAMMAR_SANITIZE=ON -DDOCKGRAMMAR_BENCH=OFF
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$(nproc)")

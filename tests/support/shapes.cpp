@@ -1,0 +1,52 @@
+#include "support/shapes.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace dg::test {
+
+TriangleMesh make_box(const Vec3& lo, const Vec3& hi) {
+  TriangleMesh mesh;
+  for (int corner = 0; corner < 8; ++corner)
+    mesh.positions.emplace_back(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(), corner & 4 ? hi.z() : lo.z());
+  // Faces as quads (counter-clockwise seen from outside).
+  const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    mesh.triangles.push_back({q[0], q[1], q[2]});
+    mesh.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return mesh;
+}
+
+TriangleMesh make_sphere(const Vec3& centre, double radius, int rings, int segments) {
+  TriangleMesh mesh;
+  mesh.positions.push_back(centre + Vec3(0, 0, radius));
+  for (int r = 1; r < rings; ++r) {
+    const double theta = std::numbers::pi * r / rings;
+    for (int s = 0; s < segments; ++s) {
+      const double phi = 2.0 * std::numbers::pi * s / segments;
+      mesh.positions.push_back(centre + radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                                                      std::cos(theta)));
+    }
+  }
+  mesh.positions.push_back(centre - Vec3(0, 0, radius));
+  const auto ring_vertex = [&](int r, int s) { return static_cast<std::uint32_t>(1 + (r - 1) * segments + (s % segments)); };
+  const auto south = static_cast<std::uint32_t>(mesh.positions.size() - 1);
+  for (int s = 0; s < segments; ++s) {
+    mesh.triangles.push_back({0, ring_vertex(1, s), ring_vertex(1, s + 1)});
+    for (int r = 1; r + 1 < rings; ++r) {
+      mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r + 1, s), ring_vertex(r + 1, s + 1)});
+      mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r, s + 1)});
+    }
+    mesh.triangles.push_back({ring_vertex(rings - 1, s), south, ring_vertex(rings - 1, s + 1)});
+  }
+  return mesh;
+}
+
+void append(TriangleMesh& mesh, const TriangleMesh& part) {
+  const auto shift = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
+  for (Triangle t : part.triangles) mesh.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+}
+
+}  // namespace dg::test

@@ -1,0 +1,13 @@
+#pragma once
+// Subcommands of the `dockgrammar` program; each file tools/dockgrammar/<name>_command.cpp
+// registers one of them on the top-level CLI11 app.
+
+#include <CLI/CLI.hpp>
+
+namespace dg::cli {
+
+void add_info_command(CLI::App& app);
+void add_analyze_command(CLI::App& app);
+void add_lsystem_command(CLI::App& app);
+
+}  // namespace dg::cli

@@ -1,0 +1,41 @@
+// The `dockgrammar` command line: parses the subcommand and maps errors to exit statuses
+// (0 success, 1 internal failure, 2 bad input or usage).
+
+#include "tools/dockgrammar/commands.h"
+
+#include "geometry/errors.h"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+  CLI::App app{"dockgrammar: inverse procedural modeling from one example model"};
+  app.set_version_flag("--version", std::string("dockgrammar ") + DOCKGRAMMAR_VERSION);
+  app.require_subcommand(1);
+  dg::cli::add_info_command(app);
+  dg::cli::add_analyze_command(app);
+  dg::cli::add_lsystem_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const dg::InputError& e) {
+    fmt::print(stderr, "dockgrammar: {}\n", e.what());
+    return 2;
+  } catch (const dg::LimitError& e) {
+    fmt::print(stderr, "dockgrammar: {}\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "dockgrammar: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "dockgrammar: internal error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,49 @@
+#include "tools/dockgrammar/model_options.h"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace dg::cli {
+
+void add_model_options(CLI::App& command, ModelOptions& options) {
+  command.add_option("MODEL", options.model_path,
+                     "Model file: OBJ, OFF, PLY, STL, glTF (.gltf/.glb) or XYZ points")
+      ->required();
+  command.add_option("-r,--radius", options.prepare.r,
+                     "Similarity radius r in model units (default: 1.6% of the longest bounding-box side)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_option("--voxel", options.prepare.eps, "Voxel size in model units (default: r/4)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_option("--sharp-angle", options.prepare.sharp_angle_degrees,
+                     "Dihedral angle in degrees above which an edge is a feature edge")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  command.add_flag("--json", options.json, "Print machine-readable results on stdout");
+}
+
+std::unique_ptr<tbb::global_control> limit_threads(int threads) {
+  if (threads <= 0) return nullptr;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                               static_cast<std::size_t>(threads));
+}
+
+ProgressCallback stderr_progress(bool quiet) {
+  if (quiet || !::isatty(STDERR_FILENO)) return {};
+  return [](std::string_view stage, double fraction) {
+    fmt::print(stderr, "\r\033[K{:>3.0f}% {}", 100.0 * fraction, stage);
+    if (fraction >= 1.0) fmt::print(stderr, "\n");
+    std::fflush(stderr);
+    return true;
+  };
+}
+
+PreparedModel prepare(const ModelOptions& options) {
+  const auto threads = limit_threads(options.threads);
+  return prepare_model(options.model_path, options.prepare, stderr_progress(options.quiet));
+}
+
+}  // namespace dg::cli

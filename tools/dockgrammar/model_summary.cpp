@@ -1,0 +1,66 @@
+#include "tools/dockgrammar/model_summary.h"
+
+#include <fmt/format.h>
+
+namespace dg::cli {
+namespace {
+
+std::string format_vector(const Vec3& v) { return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z()); }
+
+}  // namespace
+
+std::string summary_text(const PreparedModel& prepared) {
+  const CleaningReport& c = prepared.cleaning;
+  const VoxelSurfaceStats stats = prepared.surface.stats();
+  std::string out;
+  auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{:<15}{}\n", key, value); };
+  line("model", prepared.model.source_path);
+  if (c.point_cloud) {
+    line("points", fmt::format("{} ({} read, {} duplicates and {} invalid normals dropped)", c.vertices, c.input_vertices,
+                               c.duplicate_points_dropped, c.invalid_normals_dropped));
+  } else {
+    line("vertices", fmt::format("{} ({} read, {} after welding equal positions)", c.vertices, c.input_vertices,
+                                 c.welded_vertices));
+    line("triangles", fmt::format("{} ({} read, {} degenerate dropped, {} duplicated)", c.triangles, c.input_triangles,
+                                  c.degenerate_dropped, c.duplicate_triangles));
+    line("edges", fmt::format("{} boundary, {} non-manifold, {} inconsistently oriented", c.boundary_edges,
+                              c.non_manifold_edges, c.inconsistent_edges));
+    line("components", fmt::format("{}{}", c.components, c.closed_and_oriented ? " (closed, consistently oriented)" : ""));
+  }
+  line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
+                             format_vector(c.bounds.size())));
+  line("r, eps", fmt::format("{:.6g}, {:.6g} (model units)", prepared.surface.r(), prepared.surface.eps()));
+  line("voxel surface", fmt::format("{} voxels, {} planes, {} lines, {} points, {:.1f} MB", stats.voxels, stats.planes,
+                                    stats.lines, stats.points, static_cast<double>(stats.memory_bytes) / 1e6));
+  if (!c.point_cloud)
+    line("feature lines", fmt::format("{} lines, total length {:.6g}, {} samples", prepared.feature_lines.lines.size(),
+                                      prepared.feature_lines.total_length(), prepared.feature_lines.samples.size()));
+  std::string timings;
+  for (const StageTiming& t : prepared.timings) timings += fmt::format("{}{} {:.3f} s", timings.empty() ? "" : ", ", t.stage, t.seconds);
+  line("timings", timings);
+  return out;
+}
+
+nlohmann::json summary_json(const PreparedModel& prepared) {
+  const VoxelSurfaceStats stats = prepared.surface.stats();
+  nlohmann::json timings = nlohmann::json::object();
+  for (const StageTiming& t : prepared.timings) timings[t.stage] = t.seconds;
+  return {{"model", prepared.model.source_path},
+          {"cleaning", to_json(prepared.cleaning)},
+          {"r", prepared.surface.r()},
+          {"eps", prepared.surface.eps()},
+          {"voxel_surface",
+           {{"voxels", stats.voxels},
+            {"cells", stats.voxels},
+            {"planes", stats.planes},
+            {"lines", stats.lines},
+            {"points", stats.points},
+            {"memory_bytes", stats.memory_bytes}}},
+          {"feature_lines",
+           {{"count", prepared.feature_lines.lines.size()},
+            {"total_length", prepared.feature_lines.total_length()},
+            {"samples", prepared.feature_lines.samples.size()}}},
+          {"timings_s", timings}};
+}
+
+}  // namespace dg::cli
