@@ -1,0 +1,33 @@
+#include "assets/generator/committed_instances.h"
+
+#include "geometry/atomic_file.h"
+#include "geometry/model_io.h"
+
+namespace dg::assets {
+
+std::vector<Instance> committed_instances() {
+  return {{"fence_4", "fence", {{"n", 4}}},
+          {"fence_9", "fence", {{"n", 9}}},
+          {"facade_3x4", "facade", {{"columns", 3}, {"rows", 4}}},
+          {"facade_5x7", "facade", {{"columns", 5}, {"rows", 7}}},
+          {"spiral_stairs_12", "spiral_stairs", {{"steps", 12}}},
+          {"gear_12", "gear", {{"teeth", 12}}},
+          {"shelf_3x4", "shelf", {{"columns", 3}, {"rows", 4}}},
+          {"pipe_tree_3", "pipe_tree", {{"depth", 3}}},
+          {"messy_facade_3x4", "messy_facade", {{"columns", 3}, {"rows", 4}}}};
+}
+
+std::string ground_truth_text(const Asset& asset) { return asset.ground_truth.dump(2) + "\n"; }
+
+std::filesystem::path ground_truth_path(const std::filesystem::path& mesh_path) {
+  std::filesystem::path path = mesh_path;
+  return path.replace_extension(".json");
+}
+
+void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_path) {
+  write_mesh(mesh_path, asset.mesh);
+  const std::string text = ground_truth_text(asset);
+  write_file_atomically(ground_truth_path(mesh_path), [&](std::ostream& out) { out << text; }, false);
+}
+
+}  // namespace dg::assets

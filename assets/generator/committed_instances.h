@@ -1,0 +1,33 @@
+#pragma once
+// The small model instances committed to assets/models/ and how they are written to disk
+// (OBJ mesh + JSON ground truth side by side).
+
+#include "assets/generator/asset.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dg::assets {
+
+/// One committed instance: file stem in assets/models/, model name and parameters.
+struct Instance {
+  std::string stem;
+  std::string model;
+  nlohmann::json params;
+};
+
+/// The instances `dockgrammar-assets --all` writes, in a fixed order.
+std::vector<Instance> committed_instances();
+
+/// The ground-truth file text: the JSON indented by 2, with a final newline.
+std::string ground_truth_text(const Asset& asset);
+
+/// Path of the ground-truth file of a mesh file: same folder and stem, extension ".json".
+std::filesystem::path ground_truth_path(const std::filesystem::path& mesh_path);
+
+/// Writes the mesh to `mesh_path` (format by extension, via write_mesh) and the ground truth
+/// next to it, both atomically. Throws InputError for an unwritable path or unknown format.
+void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_path);
+
+}  // namespace dg::assets
