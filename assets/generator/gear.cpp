@@ -94,7 +94,7 @@ Asset make_gear(const nlohmann::json& params) {
   TriangleMesh mesh = builder.take();
 
   Repetition rep = rotation_repetition(
-      "teeth", sector, teeth,
+      "teeth", 360.0 / teeth, teeth,
       "tooth k: the gear's sector of angles [k, k+1) * 360/teeth degrees about +z (outline, faces and hole wall); "
       "count = teeth");
   // Sector boundaries are shifted by 1e-9 rad so that vertices on a boundary ray belong to one tooth.

@@ -53,21 +53,21 @@ Repetition translation_repetition(std::string name, const Vec3& pitch, int count
   return r;
 }
 
-Repetition rotation_repetition(std::string name, double angle, int count, std::string unit) {
+Repetition rotation_repetition(std::string name, double degrees, int count, std::string unit) {
   Repetition r;
   r.name = std::move(name);
   r.kind = "rotation";
-  r.transform = screw_matrix_z(angle, 0.0);
-  r.pitch = {{"angle_deg", angle * 180.0 / std::numbers::pi}, {"axis", {0.0, 0.0, 1.0}}, {"point", {0.0, 0.0, 0.0}}};
+  r.transform = screw_matrix_z(degrees * std::numbers::pi / 180.0, 0.0);
+  r.pitch = {{"angle_deg", degrees}, {"axis", {0.0, 0.0, 1.0}}, {"point", {0.0, 0.0, 0.0}}};
   r.count = count;
   r.unit = std::move(unit);
   return r;
 }
 
-Repetition screw_repetition(std::string name, double angle, double rise, int count, std::string unit) {
-  Repetition r = rotation_repetition(std::move(name), angle, count, std::move(unit));
+Repetition screw_repetition(std::string name, double degrees, double rise, int count, std::string unit) {
+  Repetition r = rotation_repetition(std::move(name), degrees, count, std::move(unit));
   r.kind = "screw";
-  r.transform = screw_matrix_z(angle, rise);
+  r.transform(2, 3) = rise;
   r.pitch["rise"] = rise;
   return r;
 }

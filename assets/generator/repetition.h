@@ -42,10 +42,10 @@ Mat4 screw_matrix_z(double angle, double rise);
 
 /// A translation repetition by `pitch`.
 Repetition translation_repetition(std::string name, const Vec3& pitch, int count, std::string unit);
-/// A rotation by `angle` radians about +z through the origin.
-Repetition rotation_repetition(std::string name, double angle, int count, std::string unit);
-/// A screw motion: rotation by `angle` radians about +z and a rise along +z (model units).
-Repetition screw_repetition(std::string name, double angle, double rise, int count, std::string unit);
+/// A rotation by `degrees` about +z through the origin.
+Repetition rotation_repetition(std::string name, double degrees, int count, std::string unit);
+/// A screw motion: rotation by `degrees` about +z and a rise along +z (model units).
+Repetition screw_repetition(std::string name, double degrees, double rise, int count, std::string unit);
 
 /// JSON of a 4x4 matrix: four rows of four numbers (row-major).
 nlohmann::json matrix_json(const Mat4& m);

@@ -1,7 +1,7 @@
 // shelf(columns, rows): a bookshelf box open to the front (-y) with columns x rows cells, i.e.
 // columns-1 vertical and rows-1 horizontal dividers fused with the frame, a back panel, and a
-// recessed plinth (toe kick) under the bottom board. Outer boards are thicker than dividers,
-// so corner, border and interior pieces differ.
+// recessed plinth (toe kick) under the bottom board, leaving a foot at each side. Outer boards
+// are thicker than dividers, so corner, border and interior pieces differ.
 //
 // Column i is the slab x in [side + i*px - d/2, side + (i+1)*px - d/2) (a cell with half a
 // divider on each side, px = cell_width + d); row j likewise along z above the plinth and the
@@ -42,7 +42,8 @@ Asset make_shelf(const nlohmann::json& params) {
   const double height = bottom + rows * pz - kDivider + kBoard;
   BoxSolid solid;
   add_box(solid, Vec3(0.0, 0.0, 0.0), Vec3(width, depth, height));
-  subtract_box(solid, Vec3(kBoard, 0.0, 0.0), Vec3(width - kBoard, kToeRecess, kPlinth));
+  // The toe recess stops half a board from each side, outside the column slabs (see below).
+  subtract_box(solid, Vec3(kBoard / 2, 0.0, 0.0), Vec3(width - kBoard / 2, kToeRecess, kPlinth));
   for (int i = 0; i < columns; ++i) {
     for (int j = 0; j < rows; ++j) {
       const Vec3 lo(kBoard + i * px, 0.0, bottom + j * pz);

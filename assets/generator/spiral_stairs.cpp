@@ -195,7 +195,7 @@ Asset make_spiral_stairs(const nlohmann::json& params) {
 
   const double angle = 2 * std::numbers::pi / s.per_turn;
   Repetition rep = screw_repetition(
-      "steps", angle, s.rise, s.steps,
+      "steps", 360.0 / s.per_turn, s.rise, s.steps,
       "step i: the wedge at angles [i, i+1] * 360/steps_per_turn degrees and heights [(i+1)*rise - step_thickness, "
       "(i+1)*rise], fused to the column; count = steps");
   const double z0 = s.bottom(0), z1 = s.top(0);
