@@ -33,8 +33,8 @@ nlohmann::json parse_params(const std::vector<std::string>& items) {
   return params;
 }
 
-/// Builds one model; with a triangle target, picks the detail whose count comes closest
-/// (triangle counts grow with detail^2 for every model).
+/// Builds one model; with a triangle target N, rebuilds it with detail round(sqrt(N / T1)),
+/// T1 = its triangle count at detail 1 (triangle counts grow about with detail^2).
 dg::assets::Asset build(const std::string& name, nlohmann::json params, std::size_t target) {
   dg::assets::Asset asset = dg::assets::make_asset(name, params);
   if (target == 0) return asset;
