@@ -7,7 +7,6 @@
 #include "tests/assets/asset_checks.h"
 
 #include <catch2/catch.hpp>
-#include <set>
 #include <string>
 
 using dg::assets::Asset;
@@ -28,7 +27,7 @@ double relative_difference(double a, double b) { return std::abs(a - b) / std::m
 
 }  // namespace
 
-TEST_CASE("every clean asset is one closed, outward, non-degenerate surface", "[assets]") {
+TEST_CASE("every clean asset is one closed, outward, non-degenerate, self-intersection-free surface", "[assets]") {
   for (const std::string& name : clean_names()) {
     INFO(name);
     const Asset asset = make_asset(name, nlohmann::json::object());
@@ -42,7 +41,21 @@ TEST_CASE("every clean asset is one closed, outward, non-degenerate surface", "[
     double smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < asset.mesh.triangles.size(); ++i) smallest = std::min(smallest, asset.mesh.area_vector(i).norm());
     CHECK(smallest > 1e-8 * scale * scale);
+    CHECK(t::self_intersections(asset.mesh) == 0);
   }
+}
+
+TEST_CASE("the self-intersection check finds overlapping copies", "[assets]") {
+  dg::TriangleMesh mesh = make_asset("gear", nlohmann::json::object()).mesh;
+  REQUIRE(t::self_intersections(mesh) == 0);
+  const std::size_t vertices = mesh.positions.size(), triangles = mesh.triangles.size();
+  for (std::size_t v = 0; v < vertices; ++v) mesh.positions.push_back(mesh.positions[v] + dg::Vec3(0.01, 0.0, 0.005));
+  for (std::size_t i = 0; i < triangles; ++i) {
+    const dg::Triangle tri = mesh.triangles[i];
+    mesh.triangles.push_back({tri[0] + static_cast<std::uint32_t>(vertices), tri[1] + static_cast<std::uint32_t>(vertices),
+                              tri[2] + static_cast<std::uint32_t>(vertices)});
+  }
+  CHECK(t::self_intersections(mesh) > 0);
 }
 
 TEST_CASE("ground truth records the mesh's counts, area and bounding box", "[assets]") {
