@@ -45,6 +45,32 @@ TEST_CASE("every clean asset is one closed, outward, non-degenerate, self-inters
   }
 }
 
+TEST_CASE("other parameters give sound models too", "[assets]") {
+  const std::vector<std::pair<std::string, nlohmann::json>> cases = {
+      {"fence", {{"n", 1}, {"pitch", 0.6}}},
+      {"facade", {{"columns", 1}, {"rows", 1}, {"column_pitch", 1.7}, {"row_pitch", 2.8}}},
+      {"shelf", {{"columns", 1}, {"rows", 2}, {"cell_width", 0.8}}},
+      {"pipe_tree", {{"depth", 0}}},
+      {"pipe_tree", {{"depth", 1}}},
+      {"pipe_tree", {{"depth", 5}, {"span", 4.0}}},
+      {"spiral_stairs", {{"steps", 30}, {"steps_per_turn", 8}, {"detail", 2}}},
+      {"spiral_stairs", {{"steps", 2}, {"steps_per_turn", 3}}},
+      {"gear", {{"teeth", 6}}},
+      {"gear", {{"teeth", 31}, {"hole_ratio", 0.1}, {"detail", 2}}}};
+  for (const auto& [name, params] : cases) {
+    INFO(name << " " << params.dump());
+    const Asset asset = make_asset(name, params);
+    CHECK(dg::is_closed_and_oriented(asset.mesh));
+    CHECK(t::signed_volume(asset.mesh) > 0.0);
+    CHECK(t::self_intersections(asset.mesh) == 0);
+    for (const nlohmann::json& rep : asset.ground_truth.at("repetitions")) {
+      const auto count = rep.at("count").get<std::size_t>();
+      CHECK(t::vertices_mapped_onto_vertices(asset.mesh, t::matrix_from_json(rep.at("transform"))) >=
+            (count - 1) * rep.at("unit_vertices").get<std::size_t>());
+    }
+  }
+}
+
 TEST_CASE("the self-intersection check finds overlapping copies", "[assets]") {
   dg::TriangleMesh mesh = make_asset("gear", nlohmann::json::object()).mesh;
   REQUIRE(t::self_intersections(mesh) == 0);
