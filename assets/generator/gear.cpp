@@ -27,7 +27,7 @@ namespace dg::assets {
 
 namespace {
 
-/// Tooth profile: (radius in units of "root"/"tip" selector, angle fraction of the sector).
+/// Tooth profile vertex: on the tip circle (else the root circle), at `fraction` of the sector.
 struct ProfilePoint {
   bool tip;
   double fraction;

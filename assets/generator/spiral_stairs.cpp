@@ -90,6 +90,7 @@ std::vector<double> edge_heights(const Stairs& s, int e) {
     }
   }
   std::sort(hard.begin(), hard.end());
+  hard.erase(std::unique(hard.begin(), hard.end()), hard.end());
   std::vector<double> heights;
   for (std::size_t k = 0; k + 1 < hard.size(); ++k) {
     const double lo = hard[k], hi = hard[k + 1];
