@@ -1,0 +1,40 @@
+#pragma once
+// Derivation: parallel rewriting of a module string by an L-system's productions.
+
+#include "grammar/lsystem.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace dg {
+
+/// Limits that stop runaway grammars with a LimitError instead of exhausting memory or time.
+struct DerivationLimits {
+  std::size_t max_modules = 5'000'000;  ///< largest string any step may produce
+  int max_steps = 100'000;              ///< most steps of "rewrite until nothing applies"
+};
+
+/// How to derive. `steps` absent: use the L-system's `iterations`, and when that is absent too,
+/// rewrite until no production applies to any module.
+struct DerivationOptions {
+  std::optional<int> steps;
+  std::uint64_t seed = 1;  ///< seeds the choice among stochastic alternatives
+  DerivationLimits limits;
+};
+
+/// The derived string and the number of steps that rewrote at least one module.
+struct Derivation {
+  std::vector<Module> modules;
+  int steps = 0;
+};
+
+/// Rewrites the axiom step by step; each step rewrites every module in parallel (context-free).
+/// Stochastic choices draw from one stream seeded by options.seed, in string order, so the same
+/// system and seed always give the same string. Stops early when a step rewrites nothing.
+/// Throws LimitError when a limit is exceeded and InputError when a successor argument is not
+/// a finite number (e.g. a division by zero).
+Derivation derive(const LSystem& system, const DerivationOptions& options = {});
+
+}  // namespace dg
