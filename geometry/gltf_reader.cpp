@@ -138,7 +138,7 @@ class GltfDocument {
     const std::size_t element_size = component_size * components;
     std::vector<double> values;
     if (!accessor.contains("bufferView")) {
-      if (count > (std::uint64_t{1} << 32)) fail("accessor " + index.dump() + " count is too large");
+      if (count > (std::uint64_t{1} << 20)) fail("accessor " + index.dump() + " without bufferView is too large");
       values.assign(count * components, 0.0);
       return values;
     }
