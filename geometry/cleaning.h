@@ -15,7 +15,8 @@ struct CleaningOptions {
   /// A triangle is degenerate when |(b - a) x (c - a)| <= collinear_tolerance * L^2, L = its longest
   /// edge. |cross| = L * h with h the height over the longest edge, so this drops triangles whose
   /// height is below 1e-12 of their longest edge (zero area, or corners collinear up to rounding).
-  /// Triangles with a repeated vertex index (after welding) are always degenerate.
+  /// Triangles with a repeated vertex index (after welding) are always degenerate; a negative
+  /// tolerance turns the geometric test off so that only those count.
   double collinear_tolerance = 1e-12;
   /// Drop degenerate triangles (default). When false they are only counted.
   bool drop_degenerate = true;
