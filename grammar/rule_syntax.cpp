@@ -107,9 +107,9 @@ std::vector<Module> parse_axiom(std::string_view text) {
     Module module{items[i].symbol, {}};
     for (const Expression& argument : items[i].arguments) {
       const std::vector<std::string> names = expression_variables(argument);
-      if (!names.empty()) fail(columns[i], "the axiom cannot use the name '" + names.front() + "'");
+      if (!names.empty()) fail(columns[i] + 1, "the axiom cannot use the name '" + names.front() + "'");
       const double value = evaluate(argument, {}, {});
-      if (!std::isfinite(value)) fail(columns[i], "argument of " + module.symbol + " is not finite");
+      if (!std::isfinite(value)) fail(columns[i] + 1, "argument of " + module.symbol + " is not finite");
       module.parameters.push_back(value);
     }
     axiom.push_back(std::move(module));
@@ -149,7 +149,7 @@ void parse_left_side(std::string_view text, Production& production) {
   const std::string_view condition = text.substr(colon + 1);
   if (trim(condition).empty()) fail(colon, "':' must be followed by a condition");
   production.condition = parse_piece(text, colon + 1, text.size());
-  check_names(*production.condition, production, colon + 1);
+  check_names(*production.condition, production, skip_space(text, colon + 1));
 }
 
 void parse_right_side(std::string_view text, Production& production) {
@@ -173,7 +173,7 @@ void parse_right_side(std::string_view text, Production& production) {
   }
   for (std::size_t i = 0; i < production.successor.size(); ++i)
     for (const Expression& argument : production.successor[i].arguments)
-      check_names(argument, production, pos + columns[i]);
+      check_names(argument, production, pos + columns[i] + 1);
 }
 
 std::string format_successor(const std::vector<SuccessorItem>& successor) {
