@@ -80,6 +80,13 @@ TEST_CASE("lsystem derive renders SVG and PNG and reports bad input with exit 2"
   CHECK(replace.status == 2);
   CHECK(replace.output.find("Q occurs in neither") != std::string::npos);
 
+  // --replace takes one value per use, so the FILE after it stays the input.
+  Run replaced = run("lsystem derive --replace F=G " + (folder / "plant.ls").string() + " -n 2 -o " +
+                         (folder / "g.svg").string(),
+                     folder);
+  CHECK(replaced.status == 0);
+  CHECK(replaced.output.find("0 elements") != std::string::npos);
+
   Run print = run("lsystem print --json " + (folder / "plant.ls").string(), folder);
   CHECK(print.status == 0);
   CHECK(print.output.find("\"F\": \"F[+F]F[-F]F\"") != std::string::npos);

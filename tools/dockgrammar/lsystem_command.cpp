@@ -160,7 +160,8 @@ void add_lsystem_command(CLI::App& app) {
                              "randomize every length, scale factor and motif size by up to +-F (0.1 = 10%)")
       ->check(CLI::Range(0.0, 0.99));
   derive_command->add_option("--replace", derive_options->replacements,
-                             "replace symbol A by B in the axiom and all successors, e.g. P2=A (repeatable)");
+                             "replace symbol A by B in the axiom and all successors, e.g. P2=A (repeat the option for more)")
+      ->allow_extra_args(false);
   derive_command->add_option("--max-modules", derive_options->max_modules,
                              "stop with an error when the derived string grows beyond N modules")
       ->capture_default_str()
