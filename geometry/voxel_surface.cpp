@@ -1,6 +1,7 @@
 #include "geometry/voxel_surface.h"
 
 #include "geometry/box_overlap.h"
+#include "geometry/clip_polygon.h"
 #include "geometry/errors.h"
 
 #include <openvdb/openvdb.h>
@@ -47,35 +48,6 @@ VoxelCoord unpack(VoxelKey key) {
           static_cast<std::int32_t>((key >> 21) & mask) - kKeyBias, static_cast<std::int32_t>(key & mask) - kKeyBias};
 }
 
-// Small polygon for clipping a triangle against axis slabs (a triangle clipped by four planes
-// has at most seven corners).
-struct ClipPolygon {
-  std::array<Vec3, 10> points;
-  int size = 0;
-
-  // Keeps the part with sign * (p[axis] - bound) <= 0.
-  ClipPolygon clipped(int axis, double bound, double sign) const {
-    ClipPolygon out;
-    for (int n = 0; n < size; ++n) {
-      const Vec3& p = points[n];
-      const Vec3& q = points[(n + 1) % size];
-      const double dp = sign * (p[axis] - bound), dq = sign * (q[axis] - bound);
-      if (dp <= 0.0) out.points[out.size++] = p;
-      if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) out.points[out.size++] = p + (dp / (dp - dq)) * (q - p);
-    }
-    return out;
-  }
-  ClipPolygon slab(int axis, double lo, double hi) const { return clipped(axis, lo, -1.0).clipped(axis, hi, 1.0); }
-  std::pair<double, double> range(int axis) const {
-    double lo = points[0][axis], hi = lo;
-    for (int n = 1; n < size; ++n) {
-      lo = std::min(lo, points[n][axis]);
-      hi = std::max(hi, points[n][axis]);
-    }
-    return {lo, hi};
-  }
-};
-
 // Voxel index range [first, last] of closed voxels that can touch the interval [lo, hi]
 // (a small slack absorbs the rounding of the division; the exact test decides later).
 std::pair<std::int64_t, std::int64_t> voxel_range(double lo, double hi, double eps) {
@@ -85,11 +57,7 @@ std::pair<std::int64_t, std::int64_t> voxel_range(double lo, double hi, double e
 // Appends (voxel key, id) for every closed voxel the triangle (a, b, c) touches. A segment is
 // passed as (a, b, b).
 void voxelize(const Vec3& a, const Vec3& b, const Vec3& c, double eps, std::uint32_t id, std::vector<KeyedItem>& out) {
-  ClipPolygon triangle;
-  triangle.points[0] = a;
-  triangle.points[1] = b;
-  triangle.points[2] = c;
-  triangle.size = 3;
+  const ClipPolygon triangle = ClipPolygon::triangle(a, b, c);
   const double slack = 1e-7 * eps;
   const auto [x_lo, x_hi] = triangle.range(0);
   const auto [i_first, i_last] = voxel_range(x_lo, x_hi, eps);
@@ -233,6 +201,15 @@ class VoxelSurfaceBuilder {
     build_records(keys_.size(), surface_.line_offsets_, surface_.lines_, make);
   }
 
+  // Cell areas from a per-cell function; the total is summed in cell order (deterministic).
+  template <class Area>
+  void set_areas(const Area& area) {
+    surface_.areas_.assign(keys_.size(), 0.0);
+    tbb::parallel_for(std::size_t(0), keys_.size(), [&](std::size_t c) { surface_.areas_[c] = area(static_cast<std::uint32_t>(c)); });
+    surface_.total_area_ = 0.0;
+    for (double a : surface_.areas_) surface_.total_area_ += a;
+  }
+
   void set_neighbours() {
     const auto& index = *surface_.grid_->index;
     build_records(keys_.size(), surface_.neighbour_offsets_, surface_.neighbours_,
@@ -327,6 +304,18 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
     merge_planes(surface.triangles(cell), triangle_planes, cos_tolerance, offset_tolerance, out);
   });
 
+  builder.set_areas([&](std::uint32_t cell) {
+    const Vec3 lo = eps * Vec3(surface.coord(cell)[0], surface.coord(cell)[1], surface.coord(cell)[2]);
+    const Vec3 hi = lo + Vec3::Constant(eps);
+    double sum = 0.0;
+    for (std::uint32_t t : surface.triangles(cell)) {
+      const auto [a, b, c] = mesh.corners(t);
+      const ClipPolygon piece = ClipPolygon::triangle(a, b, c).box(lo, hi);
+      if (piece.size >= 3) sum += piece.area();
+    }
+    return sum;
+  });
+
   report_progress(progress, "cell lines", 0.6);
   const std::vector<KeyedItem> edge_items = collect_sorted(features.size(), [&](std::uint32_t e, auto& out) {
     const Vec3& a = mesh.positions[features[e].v0];
@@ -377,6 +366,10 @@ VoxelSurface build_voxel_surface(const PointCloud& cloud, const VoxelSurfaceOpti
   tbb::parallel_sort(items.begin(), items.end());
   builder.set_cells(unique_keys(items));
   builder.set_points(items);
+  // A surface through a voxel covers about eps^2; points spread that over the cells by density.
+  const double area_per_point =
+      eps * eps * static_cast<double>(builder.keys().size()) / static_cast<double>(cloud.positions.size());
+  builder.set_areas([&](std::uint32_t cell) { return area_per_point * static_cast<double>(builder.surface().points(cell).size()); });
   report_progress(progress, "neighbourhoods", 0.7);
   builder.set_neighbours();
   report_progress(progress, "voxel surface", 1.0);
@@ -422,7 +415,8 @@ std::vector<std::uint32_t> VoxelSurface::components(std::size_t* component_count
   return label;
 }
 
-std::vector<double> VoxelSurface::intrinsic_distance(std::span<const std::uint32_t> sources, double max_distance) const {
+std::vector<double> VoxelSurface::intrinsic_distance(std::span<const std::uint32_t> sources, double max_distance,
+                                                     const std::vector<char>* passable) const {
   std::vector<double> distance(cell_count(), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
@@ -437,6 +431,7 @@ std::vector<double> VoxelSurface::intrinsic_distance(std::span<const std::uint32
     if (d > distance[c]) continue;
     const VoxelCoord& vc = coords_[c];
     for (std::uint32_t n : neighbours(c)) {
+      if (passable && !(*passable)[n]) continue;
       const VoxelCoord& vn = coords_[n];
       const int axes_changed = (vn[0] != vc[0]) + (vn[1] != vc[1]) + (vn[2] != vc[2]);
       const double candidate = d + step[axes_changed];

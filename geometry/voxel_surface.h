@@ -83,6 +83,12 @@ class VoxelSurface {
   std::span<const std::uint32_t> triangles(std::uint32_t cell) const { return slice(triangles_, triangle_offsets_, cell); }
   /// Point indices (point-cloud input) inside the cell, ascending.
   std::span<const std::uint32_t> points(std::uint32_t cell) const { return slice(points_, point_offsets_, cell); }
+  /// Surface area inside the cell's closed voxel (model units^2; for point clouds an estimate:
+  /// eps^2 per occupied voxel on average, shared out by point count). A face lying
+  /// exactly on a voxel plane counts in both voxels; use fractions of total_area().
+  double area(std::uint32_t cell) const { return areas_[cell]; }
+  /// Sum of area() over all cells.
+  double total_area() const { return total_area_; }
   /// Occupied 26-neighbours of a cell, ascending cell index.
   std::span<const std::uint32_t> neighbours(std::uint32_t cell) const { return slice(neighbours_, neighbour_offsets_, cell); }
 
@@ -91,9 +97,11 @@ class VoxelSurface {
 
   /// Intrinsic distance from the nearest source cell to every cell (model units): shortest paths
   /// on the 26-neighbourhood graph with edge lengths eps, sqrt(2) eps, sqrt(3) eps. Cells farther
-  /// than max_distance (or unreachable) get +infinity.
+  /// than max_distance (or unreachable) get +infinity. With `passable` (one flag per cell), paths
+  /// only enter cells whose flag is non-zero (sources are always reached).
   std::vector<double> intrinsic_distance(std::span<const std::uint32_t> sources,
-                                         double max_distance = std::numeric_limits<double>::infinity()) const;
+                                         double max_distance = std::numeric_limits<double>::infinity(),
+                                         const std::vector<char>* passable = nullptr) const;
 
   VoxelSurfaceStats stats() const;
 
@@ -114,6 +122,8 @@ class VoxelSurface {
   std::vector<CellPlane> planes_;
   std::vector<CellLine> lines_;
   std::vector<std::uint32_t> triangles_, points_, neighbours_;
+  std::vector<double> areas_;
+  double total_area_ = 0.0;
   std::unique_ptr<Grid> grid_;
 };
 

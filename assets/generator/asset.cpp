@@ -3,6 +3,8 @@
 #include "assets/generator/models.h"
 #include "geometry/errors.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace dg::assets {
@@ -35,6 +37,16 @@ std::vector<std::string> asset_names() {
   std::vector<std::string> names;
   for (const auto& entry : makers()) names.push_back(entry.first);
   return names;
+}
+
+Asset make_asset_with_triangles(const std::string& name, nlohmann::json params, std::size_t target_triangles) {
+  params.erase("detail");
+  Asset asset = make_asset(name, params);
+  const double base = static_cast<double>(asset.mesh.triangles.size());
+  const int detail = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target_triangles) / base))));
+  if (detail == 1) return asset;
+  params["detail"] = detail;
+  return make_asset(name, params);
 }
 
 }  // namespace dg::assets

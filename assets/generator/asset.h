@@ -25,6 +25,11 @@ struct Asset {
 /// unknown parameter or a value out of range.
 Asset make_asset(const std::string& name, const nlohmann::json& params);
 
+/// Builds `name` with the detail that brings its triangle count closest to `target_triangles`:
+/// detail round(sqrt(N / T1)), T1 = the count at detail 1 (counts grow about with detail^2).
+/// A "detail" entry in `params` is replaced.
+Asset make_asset_with_triangles(const std::string& name, nlohmann::json params, std::size_t target_triangles);
+
 /// Names accepted by make_asset, in a fixed order.
 std::vector<std::string> asset_names();
 

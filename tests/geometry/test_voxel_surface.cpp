@@ -153,3 +153,13 @@ TEST_CASE("empty input is an input error", "[geometry]") {
   CHECK_THROWS_AS(dg::build_voxel_surface(dg::TriangleMesh{}, {}), dg::InputError);
   CHECK_THROWS_AS(dg::build_voxel_surface(dg::PointCloud{}), dg::InputError);
 }
+
+TEST_CASE("cell areas add up to the surface area", "[geometry]") {
+  // Off the grid no face lies on a voxel plane, so the clipped pieces partition the surface.
+  const dg::TriangleMesh cube = dg::test::make_box(Vec3(0.1, 0.1, 0.1), Vec3(1.1, 1.1, 1.1));
+  const dg::VoxelSurface surface = voxelize(cube, 0.25);
+  CHECK(surface.total_area() == Approx(6.0));
+  const auto face = surface.find({2, 2, 4});
+  REQUIRE(face >= 0);
+  CHECK(surface.area(static_cast<std::uint32_t>(face)) == Approx(0.0625));
+}

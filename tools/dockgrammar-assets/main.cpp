@@ -33,18 +33,6 @@ nlohmann::json parse_params(const std::vector<std::string>& items) {
   return params;
 }
 
-/// Builds one model; with a triangle target N, rebuilds it with detail round(sqrt(N / T1)),
-/// T1 = its triangle count at detail 1 (triangle counts grow about with detail^2).
-dg::assets::Asset build(const std::string& name, nlohmann::json params, std::size_t target) {
-  dg::assets::Asset asset = dg::assets::make_asset(name, params);
-  if (target == 0) return asset;
-  const double base = static_cast<double>(asset.mesh.triangles.size());
-  const int detail = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target) / base))));
-  if (detail == 1) return asset;
-  params["detail"] = detail;
-  return dg::assets::make_asset(name, params);
-}
-
 /// Runs the command; returns the exit status.
 int run(int argc, char** argv) {
   CLI::App app{"Writes parametric exemplar models (OBJ/PLY/GLB) with their ground truth (JSON)"};
@@ -93,7 +81,7 @@ int run(int argc, char** argv) {
   if (detail != 0 && target != 0) throw dg::InputError("--detail and --target-triangles exclude each other");
   nlohmann::json params = parse_params(param_items);
   if (detail != 0) params["detail"] = detail;
-  const dg::assets::Asset asset = build(name, params, target);
+  const dg::assets::Asset asset = target == 0 ? dg::assets::make_asset(name, params) : dg::assets::make_asset_with_triangles(name, params, target);
   dg::assets::write_asset_files(asset, output);
   std::cout << fmt::format("{}: {} triangles -> {} and {}\n", asset.name, asset.mesh.triangles.size(), output.string(),
                            dg::assets::ground_truth_path(output).string());

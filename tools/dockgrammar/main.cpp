@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   dg::cli::add_info_command(app);
   dg::cli::add_analyze_command(app);
+  dg::cli::add_symmetry_command(app);
   dg::cli::add_lsystem_command(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,291 @@
+#include "symmetry/candidates.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <unordered_map>
+
+namespace dg {
+namespace {
+
+Mat3 frame_matrix(const Vec3& tangent, const Vec3& normal, const Vec3& binormal) {
+  Mat3 frame;
+  frame.col(0) = tangent;
+  frame.col(1) = normal;
+  frame.col(2) = binormal;
+  return frame;
+}
+
+bool compatible(const FeatureDescriptor& a, const FeatureDescriptor& b, double dihedral_tolerance) {
+  if (a.boundary != b.boundary) return false;
+  if (std::abs(a.dihedral_degrees - b.dihedral_degrees) > dihedral_tolerance) return false;
+  const double curvature_scale = std::max(std::abs(a.curvature), std::abs(b.curvature));
+  return std::abs(a.curvature - b.curvature) <= 0.25 * curvature_scale + 1e-9;
+}
+
+// Spatial hash of keypoints with cells of size `cell`.
+class KeypointGrid {
+ public:
+  KeypointGrid(const std::vector<Keypoint>& keypoints, double cell) : keypoints_(keypoints), cell_(cell) {
+    for (std::uint32_t i = 0; i < keypoints.size(); ++i) buckets_[key(keypoints[i].position)].push_back(i);
+  }
+
+  // Nearest keypoint to p within `radius` (<= cell) whose descriptor is compatible and whose
+  // frame agrees with `tangent` and `normal`, or -1. Several keypoints can share a position (the
+  // ends of lines meeting at a corner); the frame picks the right one.
+  long nearest(const Vec3& p, const FeatureDescriptor& descriptor, const Vec3& tangent, const Vec3& normal, double radius,
+               double dihedral_tolerance) const {
+    long best = -1;
+    double best_distance = radius;
+    const auto base = coords(p);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto found = buckets_.find(pack(base[0] + dx, base[1] + dy, base[2] + dz));
+          if (found == buckets_.end()) continue;
+          for (std::uint32_t i : found->second) {
+            const double d = (keypoints_[i].position - p).norm();
+            if (d <= best_distance && compatible(keypoints_[i].descriptor, descriptor, dihedral_tolerance) &&
+                keypoints_[i].tangent.dot(tangent) > 0.95 && keypoints_[i].normal.dot(normal) > 0.95 &&
+                (best < 0 || d < best_distance || i < static_cast<std::uint32_t>(best))) {
+              best = i;
+              best_distance = d;
+            }
+          }
+        }
+    return best;
+  }
+
+ private:
+  std::array<std::int64_t, 3> coords(const Vec3& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.z() / cell_))};
+  }
+  static std::uint64_t pack(std::int64_t x, std::int64_t y, std::int64_t z) {
+    const auto part = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1FFFFF; };
+    return (part(x) << 42) | (part(y) << 21) | part(z);
+  }
+  std::uint64_t key(const Vec3& p) const {
+    const auto c = coords(p);
+    return pack(c[0], c[1], c[2]);
+  }
+
+  const std::vector<Keypoint>& keypoints_;
+  double cell_;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> buckets_;
+};
+
+// 6-D voting key: quantized rotation vector and displacement of the centre, on a grid shifted
+// by `shift` bins (0 or 0.5) so that every tight cluster falls inside one bin of some grid.
+struct VoteKey {
+  std::array<std::int32_t, 6> bins;
+  auto operator<=>(const VoteKey&) const = default;
+};
+
+VoteKey vote_key(const RigidTransform& t, const Vec3& centre, double angle_bin, double translation_bin, double shift) {
+  const Eigen::AngleAxisd angle_axis(t.rotation);
+  const Vec3 rotation_vector = angle_axis.angle() * angle_axis.axis();
+  const Vec3 displacement = t.apply(centre) - centre;
+  VoteKey key;
+  for (int k = 0; k < 3; ++k) {
+    key.bins[k] = static_cast<std::int32_t>(std::floor(rotation_vector[k] / angle_bin + shift));
+    key.bins[k + 3] = static_cast<std::int32_t>(std::floor(displacement[k] / translation_bin + shift));
+  }
+  return key;
+}
+
+// Keypoint matches of T: every keypoint whose image lands on a compatible keypoint.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> matches_of(const RigidTransform& t, const std::vector<Keypoint>& keypoints,
+                                                                const KeypointGrid& grid, double radius,
+                                                                double dihedral_tolerance) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> matches;
+  for (std::uint32_t i = 0; i < keypoints.size(); ++i) {
+    const long j = grid.nearest(t.apply(keypoints[i].position), keypoints[i].descriptor, t.rotation * keypoints[i].tangent,
+                                t.rotation * keypoints[i].normal, radius, dihedral_tolerance);
+    if (j >= 0 && static_cast<std::uint32_t>(j) != i) matches.emplace_back(i, static_cast<std::uint32_t>(j));
+  }
+  return matches;
+}
+
+// ICP on keypoints: refit T to its matches with a shrinking match radius, so that pairs that
+// only roughly agree (different parts that happen to lie close) drop out and exact repeats fit
+// to rounding precision.
+Candidate refine(RigidTransform t, const std::vector<Keypoint>& keypoints, const KeypointGrid& grid, double eps,
+                 double dihedral_tolerance) {
+  Candidate candidate;
+  candidate.transform = t;
+  for (double radius : {eps, 0.25 * eps, 0.1 * eps, 0.1 * eps}) {
+    candidate.matches = matches_of(candidate.transform, keypoints, grid, radius, dihedral_tolerance);
+    if (candidate.matches.size() < 3) break;
+    std::vector<Vec3> from, to;
+    for (const auto& [i, j] : candidate.matches) {
+      from.push_back(keypoints[i].position);
+      to.push_back(keypoints[j].position);
+    }
+    candidate.transform = fit_rigid_transform(from, to);
+  }
+  return candidate;
+}
+
+// Two motions are the same candidate when they move the centre to within eps and their
+// rotations differ by less than about half a degree.
+bool same_motion(const RigidTransform& a, const RigidTransform& b, const Vec3& centre, double eps) {
+  return (a.apply(centre) - b.apply(centre)).norm() < eps &&
+         RigidTransform{a.rotation.transpose() * b.rotation, Vec3::Zero()}.angle() < 0.01;
+}
+
+// Puts a candidate's motion into canonical form, swapping its matches when it is inverted.
+void make_canonical(Candidate& c, double slide_tolerance) {
+  const RigidTransform canonical = canonical_motion(c.transform, slide_tolerance);
+  if (!(canonical.rotation.isApprox(c.transform.rotation) && canonical.translation.isApprox(c.transform.translation)))
+    for (auto& [i, j] : c.matches) std::swap(i, j);
+  c.transform = canonical;
+}
+
+}  // namespace
+
+Candidate refine_candidate(const RigidTransform& transform, const std::vector<Keypoint>& keypoints,
+                           const CandidateOptions& options) {
+  const KeypointGrid grid(keypoints, options.eps);
+  Candidate c = refine(transform, keypoints, grid, options.eps, options.dihedral_tolerance_degrees);
+  make_canonical(c, 0.5 * options.eps);
+  return c;
+}
+
+std::vector<Keypoint> feature_keypoints(const FeatureLines& lines) {
+  std::vector<Keypoint> keypoints;
+  const auto& samples = lines.samples;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const FeatureSample& s = samples[i];
+    if (lines.lines[s.line].closed) continue;
+    const bool first = i == 0 || samples[i - 1].line != s.line;
+    const bool last = i + 1 == samples.size() || samples[i + 1].line != s.line;
+    if (!first && !last) continue;
+    Keypoint k{s.position, s.tangent, s.normal, s.binormal, s.descriptor};
+    if (last && !first) {  // the tangent points into the line at both ends
+      k.tangent = -k.tangent;
+      k.binormal = -k.binormal;
+    }
+    keypoints.push_back(k);
+    if (first && last) {  // a one-sample line: also the other orientation
+      Keypoint reversed = k;
+      reversed.tangent = -k.tangent;
+      reversed.binormal = -k.binormal;
+      keypoints.push_back(reversed);
+    }
+  }
+  return keypoints;
+}
+
+RigidTransform canonical_motion(const RigidTransform& transform, double slide_tolerance) {
+  // Below this angle (radians) a motion counts as a translation when choosing its direction.
+  constexpr double translation_angle = 1e-3;
+  const double angle = transform.angle();
+  Vec3 axis = angle < translation_angle ? transform.translation : transform.axis();
+  auto reference_sign = [](const Vec3& v) {
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(v[k]) > 1e-9 * v.norm()) return v[k] > 0.0 ? 1.0 : -1.0;
+    return 1.0;
+  };
+  axis *= reference_sign(axis);  // oriented by its first clearly non-zero component
+  bool keep;
+  if (angle < translation_angle) {
+    keep = transform.translation.dot(axis) >= 0.0;
+  } else {
+    const Eigen::AngleAxisd angle_axis(transform.rotation);
+    const double signed_angle = angle_axis.axis().dot(axis) >= 0.0 ? angle_axis.angle() : -angle_axis.angle();
+    const double slide = transform.translation.dot(axis);
+    if (std::abs(slide) < slide_tolerance)
+      keep = signed_angle > 0.0 || std::abs(std::abs(signed_angle) - std::numbers::pi) < 1e-9;  // rotation
+    else
+      keep = slide > 0.0;  // screw
+  }
+  return keep ? transform : transform.inverse();
+}
+
+std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, const Vec3& centre,
+                                       const CandidateOptions& options, CandidateStats* stats) {
+  CandidateStats local;
+  local.keypoints = keypoints.size();
+  std::vector<Candidate> result;
+  if (keypoints.size() < 2 || !(options.eps > 0.0)) {
+    if (stats) *stats = local;
+    return result;
+  }
+  const double eps = options.eps;
+  const std::size_t stride = std::max<std::size_t>(1, (keypoints.size() + options.max_sources - 1) / options.max_sources);
+  std::vector<std::uint32_t> sources;
+  for (std::size_t i = 0; i < keypoints.size(); i += stride) sources.push_back(static_cast<std::uint32_t>(i));
+
+  // Frame-to-frame motions for every compatible (source, target) pair, voted on two shifted grids.
+  const double translation_bin = options.translation_bin_eps * eps;
+  std::vector<std::vector<std::pair<VoteKey, RigidTransform>>> per_source(sources.size());
+  tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t s) {
+    const Keypoint& a = keypoints[sources[s]];
+    const Mat3 from = frame_matrix(a.tangent, a.normal, a.binormal);
+    for (std::uint32_t j = 0; j < keypoints.size(); ++j) {
+      if (j == sources[s]) continue;
+      const Keypoint& b = keypoints[j];
+      if (!compatible(a.descriptor, b.descriptor, options.dihedral_tolerance_degrees)) continue;
+      const Mat3 to = frame_matrix(b.tangent, b.normal, b.binormal);
+      RigidTransform t;
+      t.rotation = to * from.transpose();
+      t.translation = b.position - t.rotation * a.position;
+      if ((t.apply(centre) - centre).norm() < 0.5 * eps && t.angle() < options.angle_bin_radians) continue;  // identity
+      for (double shift : {0.0, 0.5})
+        per_source[s].emplace_back(vote_key(t, centre, options.angle_bin_radians, translation_bin, shift), t);
+    }
+  });
+  std::map<VoteKey, std::vector<const RigidTransform*>> bins;
+  for (const auto& votes : per_source)
+    for (const auto& [key, t] : votes) {
+      bins[key].push_back(&t);
+      ++local.pair_transforms;
+    }
+  local.pair_transforms /= 2;
+
+  // Peaks: bins with enough votes, largest first (ties by key: deterministic).
+  std::vector<std::pair<std::size_t, const std::vector<const RigidTransform*>*>> peaks;
+  for (const auto& [key, members] : bins)
+    if (members.size() >= options.min_support) peaks.emplace_back(members.size(), &members);
+  std::stable_sort(peaks.begin(), peaks.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  const std::size_t max_peaks = 400;
+  if (peaks.size() > max_peaks) peaks.resize(max_peaks);
+  local.peaks = peaks.size();
+
+  const KeypointGrid grid(keypoints, eps);
+  std::vector<Candidate> refined(peaks.size());
+  tbb::parallel_for(std::size_t(0), peaks.size(), [&](std::size_t p) {
+    // Mean of the bin's members (rotation averaged through the matrix, re-orthonormalized).
+    Mat4 sum = Mat4::Zero();
+    for (const RigidTransform* t : *peaks[p].second) sum += t->matrix();
+    const RigidTransform mean = rigid_from_matrix(sum / static_cast<double>(peaks[p].second->size()));
+    refined[p] = refine(mean, keypoints, grid, eps, options.dihedral_tolerance_degrees);
+  });
+
+  const double slide_tolerance = 0.5 * eps;
+  for (Candidate& c : refined) {
+    if (c.matches.size() < options.min_support) continue;
+    if ((c.transform.apply(centre) - centre).norm() < 0.5 * eps && c.transform.angle() < options.angle_bin_radians) continue;
+    make_canonical(c, slide_tolerance);
+    const RigidTransform& canonical = c.transform;
+    bool duplicate = false;
+    for (const Candidate& kept : result)
+      if (same_motion(kept.transform, canonical, centre, eps)) {
+        duplicate = true;
+        break;
+      }
+    if (duplicate) continue;
+    result.push_back(std::move(c));
+  }
+  std::stable_sort(result.begin(), result.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.matches.size() > y.matches.size(); });
+  local.candidates = result.size();
+  if (stats) *stats = local;
+  return result;
+}
+
+}  // namespace dg

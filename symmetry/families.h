@@ -1,0 +1,32 @@
+#pragma once
+// Repetition families: a translation t with its multiples 2t, 3t, ..., a rotation by 360/n with
+// its powers, a screw motion with its powers, reported as one generator and a repeat count.
+
+#include "geometry/rigid_transform.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace dg {
+
+struct SymmetryFamily {
+  RigidTransform generator;
+  std::string kind;                  ///< "translation", "rotation" or "screw"
+  std::vector<std::size_t> members;  ///< indices into the motions given to group_families
+  std::vector<int> powers;           ///< generator power of each member (member = generator^power)
+  /// Repeats found: the distinct powers k >= 1 seen (fence of n posts: n - 1). For a rotation
+  /// whose angle divides 360 degrees into n steps, powers k and n - k are one motion up to
+  /// inversion, so both are counted.
+  std::size_t count = 0;
+  int order = 0;  ///< rotations: n when the generator angle is 360/n degrees, else 0
+};
+
+/// Groups canonical motions (see canonical_motion) into families. `eps` is the positional
+/// tolerance in model units, `centre` a point near the model used to compare motions.
+/// Every motion belongs to exactly one family; families keep the input order of their
+/// smallest member.
+std::vector<SymmetryFamily> group_families(const std::vector<RigidTransform>& motions, const std::vector<std::string>& kinds,
+                                           const Vec3& centre, double eps);
+
+}  // namespace dg

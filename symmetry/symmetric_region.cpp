@@ -1,0 +1,196 @@
+#include "symmetry/symmetric_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace dg {
+
+CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options)
+    : surface_(surface), cloud_(cloud),
+      cos_tolerance_(std::cos(options.angle_tolerance_degrees * std::numbers::pi / 180.0)),
+      offset_tolerance_(options.offset_tolerance_eps * surface.eps()),
+      point_tolerance_(options.point_tolerance_eps * surface.eps()), point_fraction_(options.point_match_fraction) {}
+
+void CellMatcher::block_cells(const VoxelCoord& v, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -1; dz <= 1; ++dz) {
+        const std::int64_t c = surface_.find({v[0] + dx, v[1] + dy, v[2] + dz});
+        if (c >= 0) out.push_back(static_cast<std::uint32_t>(c));
+      }
+}
+
+std::int64_t CellMatcher::image_cell(std::uint32_t cell, const RigidTransform& t) const {
+  const Vec3 image = t.apply(surface_.centre(cell));
+  const VoxelCoord v = surface_.voxel_of(image);
+  const std::int64_t direct = surface_.find(v);
+  if (direct >= 0) return direct;
+  std::vector<std::uint32_t> block;
+  block_cells(v, block);
+  std::int64_t best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::uint32_t c : block) {
+    const double d = (surface_.centre(c) - image).squaredNorm();
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+namespace {
+
+// The cells where mapped geometry may lie: first the voxel holding the image of the centre
+// (where it almost always is), the whole 3x3x3 block around it only when something is missing.
+class ImageCells {
+ public:
+  ImageCells(const VoxelSurface& surface, const VoxelCoord& voxel) : surface_(surface), voxel_(voxel) {
+    const std::int64_t direct = surface.find(voxel);
+    if (direct >= 0) cells_.push_back(static_cast<std::uint32_t>(direct));
+  }
+
+  // Calls `found(cell)` on the cells until it returns true; widens to the block once if needed.
+  template <class Found>
+  bool any(const Found& found) {
+    for (std::uint32_t c : cells_)
+      if (found(c)) return true;
+    if (widened_) return false;
+    widened_ = true;
+    const std::size_t before = cells_.size();
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0) continue;
+          const std::int64_t c = surface_.find({voxel_[0] + dx, voxel_[1] + dy, voxel_[2] + dz});
+          if (c >= 0) cells_.push_back(static_cast<std::uint32_t>(c));
+        }
+    for (std::size_t i = before; i < cells_.size(); ++i)
+      if (found(cells_[i])) return true;
+    return false;
+  }
+
+ private:
+  const VoxelSurface& surface_;
+  VoxelCoord voxel_;
+  std::vector<std::uint32_t> cells_;
+  bool widened_ = false;
+};
+
+}  // namespace
+
+bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t) const {
+  const Vec3 centre = surface_.centre(cell);
+  ImageCells image(surface_, surface_.voxel_of(t.apply(centre)));
+
+  for (const CellPlane& plane : surface_.planes(cell)) {
+    const Vec3 foot = t.apply(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
+    const Vec3 normal = t.apply_direction(plane.normal);
+    const bool found = image.any([&](std::uint32_t other) {
+      for (const CellPlane& candidate : surface_.planes(other))
+        if (candidate.normal.dot(normal) > cos_tolerance_ && std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
+          return true;
+      return false;
+    });
+    if (!found) return false;
+  }
+  for (const CellLine& line : surface_.lines(cell)) {
+    const Vec3 foot = t.apply(line.point + (centre - line.point).dot(line.direction) * line.direction);
+    const Vec3 direction = t.apply_direction(line.direction);
+    const bool found = image.any([&](std::uint32_t other) {
+      for (const CellLine& candidate : surface_.lines(other)) {
+        if (candidate.kind != line.kind || std::abs(candidate.direction.dot(direction)) < cos_tolerance_) continue;
+        const Vec3 offset = foot - candidate.point;
+        if ((offset - offset.dot(candidate.direction) * candidate.direction).norm() < offset_tolerance_) return true;
+      }
+      return false;
+    });
+    if (!found) return false;
+  }
+  if (cloud_) {
+    const auto points = surface_.points(cell);
+    std::size_t matched = 0;
+    const double tolerance2 = point_tolerance_ * point_tolerance_;
+    for (std::uint32_t p : points) {
+      const Vec3 mapped = t.apply(cloud_->positions[p]);
+      const bool found = image.any([&](std::uint32_t other) {
+        for (std::uint32_t q : surface_.points(other))
+          if ((cloud_->positions[q] - mapped).squaredNorm() <= tolerance2) return true;
+        return false;
+      });
+      matched += found ? 1 : 0;
+    }
+    if (static_cast<double>(matched) < point_fraction_ * static_cast<double>(points.size())) return false;
+  }
+  return true;
+}
+
+bool CellMatcher::symmetric(std::uint32_t cell, const RigidTransform& t, const RigidTransform& inverse) const {
+  if (!maps_onto_surface(cell, t)) return false;
+  const std::int64_t image = image_cell(cell, t);
+  return image >= 0 && maps_onto_surface(static_cast<std::uint32_t>(image), inverse);
+}
+
+SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
+                                 std::span<const std::uint32_t> seeds, bool fill_outliers) {
+  SymmetricRegion region;
+  const RigidTransform inverse = t.inverse();
+  enum : std::uint8_t { unknown, yes, no };
+  std::vector<std::uint8_t> state(surface.cell_count(), unknown);
+  std::vector<std::uint32_t> queue;
+  auto test = [&](std::uint32_t c) {
+    if (state[c] != unknown) return;
+    ++region.cells_tested;
+    state[c] = matcher.symmetric(c, t, inverse) ? yes : no;
+    if (state[c] == yes) queue.push_back(c);
+  };
+  for (std::uint32_t s : seeds) test(s);
+  if (4 * queue.size() < seeds.size() || queue.empty()) {
+    region.rejected_early = true;
+    return region;
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head)
+    for (std::uint32_t n : surface.neighbours(queue[head])) test(n);
+
+  if (fill_outliers) {
+    std::vector<std::uint32_t> filled;
+    for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+      if (state[c] != no) continue;
+      std::size_t symmetric_neighbours = 0;
+      const auto neighbours = surface.neighbours(c);
+      for (std::uint32_t n : neighbours) symmetric_neighbours += state[n] == yes ? 1 : 0;
+      if (!neighbours.empty() && 4 * symmetric_neighbours >= 3 * neighbours.size()) filled.push_back(c);
+    }
+    for (std::uint32_t c : filled) {
+      state[c] = yes;
+      queue.push_back(c);
+    }
+  }
+  std::sort(queue.begin(), queue.end());
+  region.symmetric_cells = std::move(queue);
+  for (std::uint32_t c : region.symmetric_cells) region.symmetric_area += surface.area(c);
+  region.r_symmetric_cells = erode(surface, region.symmetric_cells, surface.r());
+  for (std::uint32_t c : region.r_symmetric_cells) region.r_symmetric_area += surface.area(c);
+  return region;
+}
+
+std::vector<std::uint32_t> erode(const VoxelSurface& surface, const std::vector<std::uint32_t>& region, double r) {
+  // Distances from the cells just outside the region, travelling through region cells only.
+  std::vector<char> inside(surface.cell_count(), 0);
+  for (std::uint32_t c : region) inside[c] = 1;
+  std::vector<std::uint32_t> border;
+  for (std::uint32_t c : region)
+    for (std::uint32_t n : surface.neighbours(c))
+      if (!inside[n]) border.push_back(n);
+  std::sort(border.begin(), border.end());
+  border.erase(std::unique(border.begin(), border.end()), border.end());
+  const std::vector<double> distance = surface.intrinsic_distance(border, r, &inside);
+  std::vector<std::uint32_t> eroded;
+  for (std::uint32_t c : region)
+    if (distance[c] > r) eroded.push_back(c);
+  return eroded;
+}
+
+}  // namespace dg

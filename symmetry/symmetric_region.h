@@ -1,0 +1,70 @@
+#pragma once
+// The symmetric region xi(T) of a candidate motion on the voxel surface, and its erosion by r
+// in intrinsic distance, xi_r(T) (paper 001 §3.1, §4.1).
+
+#include "geometry/mesh.h"
+#include "geometry/rigid_transform.h"
+#include "geometry/voxel_surface.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace dg {
+
+struct RegionOptions {
+  double angle_tolerance_degrees = 1.0;  ///< mapped planes/lines must agree in direction within this
+  double offset_tolerance_eps = 0.1;     ///< ... and in position within this many eps
+  double point_tolerance_eps = 0.5;      ///< point clouds: a mapped point needs a point this close
+  double point_match_fraction = 0.7;     ///< point clouds: share of a cell's points that must match
+};
+
+/// Decides whether single cells are symmetric under a motion by comparing exact geometry.
+class CellMatcher {
+ public:
+  /// `cloud` is the point cloud the surface was built from, or null for meshes.
+  CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options = {});
+
+  /// True when every plane and line (or most points) of `cell`, mapped by `t`, lies on geometry
+  /// near the image of the cell centre.
+  bool maps_onto_surface(std::uint32_t cell, const RigidTransform& t) const;
+
+  /// Cell of the voxel holding t(centre(cell)), or the nearest occupied voxel around it; -1 if none.
+  std::int64_t image_cell(std::uint32_t cell, const RigidTransform& t) const;
+
+  /// Symmetric in both directions: the cell maps onto the surface under t, and its image cell
+  /// maps back onto the surface under `inverse` (= t^-1).
+  bool symmetric(std::uint32_t cell, const RigidTransform& t, const RigidTransform& inverse) const;
+
+ private:
+  // Occupied cells in the 3x3x3 block around voxel v.
+  void block_cells(const VoxelCoord& v, std::vector<std::uint32_t>& out) const;
+
+  const VoxelSurface& surface_;
+  const PointCloud* cloud_;
+  double cos_tolerance_, offset_tolerance_, point_tolerance_, point_fraction_;
+};
+
+struct SymmetricRegion {
+  std::vector<std::uint32_t> symmetric_cells;    ///< xi(T), ascending
+  std::vector<std::uint32_t> r_symmetric_cells;  ///< xi_r(T), ascending
+  double symmetric_area = 0.0;                   ///< sum of cell areas, model units^2
+  double r_symmetric_area = 0.0;
+  std::size_t cells_tested = 0;
+  bool rejected_early = false;
+};
+
+/// Grows xi(T) from `seeds` through 26-adjacent cells that pass CellMatcher::symmetric (cells
+/// not connected to a seed through symmetric cells are not found), then erodes it: a cell stays
+/// in xi_r(T) when its intrinsic distance to the nearest non-symmetric cell exceeds r.
+/// Point clouds (`fill_outliers`): a failed cell whose neighbours are mostly symmetric counts
+/// as symmetric (isolated outliers inside symmetric area). Early rejection: when fewer than a
+/// quarter of the seeds are symmetric, the candidate is bad and the region is returned empty
+/// without growing.
+SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
+                                 std::span<const std::uint32_t> seeds, bool fill_outliers);
+
+/// Cells of `region` (ascending) whose intrinsic distance to any cell outside it exceeds r.
+std::vector<std::uint32_t> erode(const VoxelSurface& surface, const std::vector<std::uint32_t>& region, double r);
+
+}  // namespace dg

@@ -1,0 +1,146 @@
+#include "symmetry/symmetry_detection.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <cmath>
+#include <numbers>
+
+namespace dg {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOptions& options,
+                                 const ProgressCallback& progress) {
+  SymmetryResult result;
+  const VoxelSurface& surface = prepared.surface;
+  const double eps = surface.eps();
+  const Vec3 centre = 0.5 * (prepared.model.bounds().min + prepared.model.bounds().max);
+
+  auto start = std::chrono::steady_clock::now();
+  report_progress(progress, "symmetry candidates", 0.0);
+  const std::vector<Keypoint> keypoints = feature_keypoints(prepared.feature_lines);
+  CandidateOptions candidate_options = options.candidates;
+  candidate_options.eps = eps;
+  CandidateStats candidate_stats;
+  std::vector<Candidate> candidates = find_candidates(keypoints, centre, candidate_options, &candidate_stats);
+  result.stats.keypoints = candidate_stats.keypoints;
+  result.stats.pair_transforms = candidate_stats.pair_transforms;
+  result.stats.candidates = candidates.size();
+  result.timings.push_back({"candidates", seconds_since(start)});
+  if (candidates.empty()) {
+    result.note = prepared.model.is_point_cloud()
+                      ? "no candidates: point clouds have no feature lines to align yet"
+                      : (keypoints.empty() ? "no candidates: the model has no feature-line ends (smooth or organic surface)"
+                                           : "no candidates: no two feature-line ends match under a rigid motion");
+    return result;
+  }
+  if (candidates.size() > options.max_verified) candidates.resize(options.max_verified);
+
+  start = std::chrono::steady_clock::now();
+  report_progress(progress, "symmetric regions", 0.3);
+  const CellMatcher matcher(surface, prepared.model.is_point_cloud() ? &prepared.model.cloud : nullptr, options.region);
+  const double total = surface.total_area();
+  const double area_scale = prepared.model.is_point_cloud() || total <= 0.0 ? 1.0 : prepared.model.mesh.area() / total;
+  // Verifies one candidate; an empty optional when it is rejected (counted in `stats`).
+  auto evaluate = [&](const Candidate& candidate, SymmetryStats& stats) -> std::optional<DetectedSymmetry> {
+    std::vector<std::uint32_t> seeds;
+    const auto& matches = candidate.matches;
+    const std::size_t stride = std::max<std::size_t>(1, matches.size() / options.max_seeds);
+    for (std::size_t m = 0; m < matches.size(); m += stride) {
+      const std::int64_t cell = surface.find(surface.voxel_of(keypoints[matches[m].first].position));
+      if (cell >= 0) seeds.push_back(static_cast<std::uint32_t>(cell));
+    }
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    SymmetricRegion region = symmetric_region(matcher, surface, candidate.transform, seeds, prepared.model.is_point_cloud());
+    ++stats.verified;
+    if (region.rejected_early) {
+      ++stats.rejected_early;
+      return std::nullopt;
+    }
+    const double fraction = total > 0.0 ? region.r_symmetric_area / total : 0.0;
+    if (fraction < options.min_r_symmetric_fraction) {
+      ++stats.rejected_small;
+      return std::nullopt;
+    }
+    DetectedSymmetry symmetry;
+    symmetry.transform = candidate.transform;
+    symmetry.kind = motion_kind(symmetry.transform, 0.5 * std::numbers::pi / 180.0, 0.5 * eps);
+    symmetry.screw = screw_parameters(symmetry.transform);
+    symmetry.support = candidate.matches.size();
+    symmetry.symmetric_fraction = region.symmetric_area / total;
+    symmetry.r_symmetric_fraction = fraction;
+    symmetry.symmetric_area = region.symmetric_area * area_scale;
+    symmetry.r_symmetric_area = region.r_symmetric_area * area_scale;
+    symmetry.region = std::move(region);
+    return symmetry;
+  };
+
+  std::vector<std::optional<DetectedSymmetry>> evaluated(candidates.size());
+  std::vector<SymmetryStats> candidate_stats_each(candidates.size());
+  tbb::parallel_for(std::size_t(0), candidates.size(),
+                    [&](std::size_t i) { evaluated[i] = evaluate(candidates[i], candidate_stats_each[i]); });
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    result.stats.verified += candidate_stats_each[i].verified;
+    result.stats.rejected_early += candidate_stats_each[i].rejected_early;
+    result.stats.rejected_small += candidate_stats_each[i].rejected_small;
+    if (evaluated[i]) result.symmetries.push_back(std::move(*evaluated[i]));
+  }
+
+  // Repetition families: probe the powers of each small motion that voting did not propose.
+  const auto same_motion = [&](const RigidTransform& a, const RigidTransform& b) {
+    return (a.apply(centre) - b.apply(centre)).norm() < eps &&
+           RigidTransform{a.rotation.transpose() * b.rotation, Vec3::Zero()}.angle() < 0.01;
+  };
+  const std::size_t proposed = result.symmetries.size();
+  for (std::size_t g = 0; g < proposed; ++g) {
+    const RigidTransform generator = result.symmetries[g].transform;
+    RigidTransform power = generator;
+    for (int k = 2; k <= options.max_power; ++k) {
+      power = generator.after(power);
+      if ((power.apply(centre) - centre).norm() < eps && power.angle() < 0.01) break;  // back to the identity
+      const RigidTransform canonical = canonical_motion(power, 0.5 * eps);
+      bool known = false;
+      for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical);
+      if (known) continue;
+      const Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
+      if (probe.matches.size() < candidate_options.min_support) break;
+      std::optional<DetectedSymmetry> found = evaluate(probe, result.stats);
+      if (!found) break;
+      result.symmetries.push_back(std::move(*found));
+    }
+  }
+  const double region_seconds = seconds_since(start);
+  result.timings.push_back({"symmetric regions", region_seconds});
+  result.stats.seconds_per_verified = region_seconds / static_cast<double>(std::max<std::size_t>(1, result.stats.verified));
+  std::stable_sort(result.symmetries.begin(), result.symmetries.end(),
+                   [](const DetectedSymmetry& a, const DetectedSymmetry& b) { return a.r_symmetric_area > b.r_symmetric_area; });
+
+  start = std::chrono::steady_clock::now();
+  std::vector<RigidTransform> motions;
+  std::vector<std::string> kinds;
+  for (const DetectedSymmetry& s : result.symmetries) {
+    motions.push_back(s.transform);
+    kinds.push_back(s.kind);
+  }
+  result.families = group_families(motions, kinds, centre, eps);
+  for (std::size_t f = 0; f < result.families.size(); ++f)
+    for (std::size_t m = 0; m < result.families[f].members.size(); ++m) {
+      result.symmetries[result.families[f].members[m]].family = f;
+      result.symmetries[result.families[f].members[m]].power = result.families[f].powers[m];
+    }
+  result.timings.push_back({"families", seconds_since(start)});
+  if (result.symmetries.empty()) result.note = "no candidate had enough r-symmetric area";
+  report_progress(progress, "symmetry", 1.0);
+  return result;
+}
+
+}  // namespace dg

@@ -1,0 +1,44 @@
+// `dockgrammar symmetry MODEL`: partial rigid symmetries ordered by r-symmetric area.
+
+#include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/symmetry_report.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+namespace dg::cli {
+
+void add_symmetry_command(CLI::App& app) {
+  struct Options {
+    ModelOptions model;
+    std::size_t top = 10;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
+  add_model_options(*command, options->model);
+  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
+  command->callback([options] {
+    const auto threads = limit_threads(options->model.threads);
+    const ProgressCallback progress = stderr_progress(options->model.quiet);
+    const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
+    const SymmetryResult result = detect_symmetries(prepared, {}, progress);
+    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top);
+    if (options->model.json) {
+      nlohmann::json out = symmetry_json(result, options->top);
+      out["model"] = prepared.model.source_path;
+      out["r"] = prepared.surface.r();
+      out["eps"] = prepared.surface.eps();
+      for (const StageTiming& t : prepared.timings) out["timings_s"][t.stage] = t.seconds;
+      fmt::print("{}\n", out.dump(2));
+    } else {
+      fmt::print("model {}: r = {:.6g}, eps = {:.6g}\n\n{}", prepared.model.source_path, prepared.surface.r(),
+                 prepared.surface.eps(), symmetry_table(result, options->top));
+    }
+  });
+}
+
+}  // namespace dg::cli

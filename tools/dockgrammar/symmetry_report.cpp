@@ -1,0 +1,135 @@
+#include "tools/dockgrammar/symmetry_report.h"
+
+#include "geometry/cell_pieces.h"
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace dg::cli {
+namespace {
+
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+std::string vec(const Vec3& v) { return fmt::format("({:.5g}, {:.5g}, {:.5g})", v.x(), v.y(), v.z()); }
+
+std::string describe_motion(const RigidTransform& t, const std::string& kind) {
+  if (kind == "translation") return fmt::format("t = {}, |t| = {:.6g}", vec(t.translation), t.translation.norm());
+  const ScrewParameters screw = screw_parameters(t);
+  std::string text = fmt::format("{:.3f} deg about {} through {}", degrees(screw.angle), vec(screw.axis), vec(screw.axis_point));
+  if (kind == "screw") text += fmt::format(", rise {:.6g}", screw.slide);
+  return text;
+}
+
+nlohmann::json matrix_json(const RigidTransform& t) {
+  const Mat4 m = t.matrix();
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
+  return rows;
+}
+
+}  // namespace
+
+std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
+  if (result.symmetries.empty()) return fmt::format("no symmetries found: {}\n", result.note);
+  std::string out = fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", "#", "kind", "symmetric area",
+                                "r-symmetric area", "family", "motion");
+  for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
+    const DetectedSymmetry& s = result.symmetries[i];
+    out += fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", i + 1, s.kind,
+                       fmt::format("{:.4g} ({:.1f}%)", s.symmetric_area, 100.0 * s.symmetric_fraction),
+                       fmt::format("{:.4g} ({:.1f}%)", s.r_symmetric_area, 100.0 * s.r_symmetric_fraction),
+                       fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(s.transform, s.kind));
+  }
+  out += "\nfamilies (generator, repeats found):\n";
+  for (std::size_t f = 0; f < result.families.size(); ++f) {
+    const SymmetryFamily& family = result.families[f];
+    out += fmt::format("  F{:<3} {:<11} x{:<3}{}  {}\n", f + 1, family.kind, family.count,
+                       family.order > 0 ? fmt::format(" (order {})", family.order) : std::string(),
+                       describe_motion(family.generator, family.kind));
+  }
+  return out;
+}
+
+nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
+  nlohmann::json symmetries = nlohmann::json::array();
+  for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
+    const DetectedSymmetry& s = result.symmetries[i];
+    const SymmetryFamily& family = result.families[s.family];
+    symmetries.push_back({{"matrix", matrix_json(s.transform)},
+                          {"kind", s.kind},
+                          {"angle_degrees", degrees(s.screw.angle)},
+                          {"axis", {s.screw.axis.x(), s.screw.axis.y(), s.screw.axis.z()}},
+                          {"axis_point", {s.screw.axis_point.x(), s.screw.axis_point.y(), s.screw.axis_point.z()}},
+                          {"slide", s.screw.slide},
+                          {"translation", {s.transform.translation.x(), s.transform.translation.y(), s.transform.translation.z()}},
+                          {"support", s.support},
+                          {"symmetric_area", s.symmetric_area},
+                          {"r_symmetric_area", s.r_symmetric_area},
+                          {"symmetric_fraction", s.symmetric_fraction},
+                          {"r_symmetric_fraction", s.r_symmetric_fraction},
+                          {"family",
+                           {{"index", s.family},
+                            {"generator", matrix_json(family.generator)},
+                            {"count", family.count},
+                            {"order", family.order},
+                            {"power", s.power}}}});
+  }
+  nlohmann::json families = nlohmann::json::array();
+  for (const SymmetryFamily& f : result.families)
+    families.push_back({{"kind", f.kind}, {"generator", matrix_json(f.generator)}, {"count", f.count}, {"order", f.order},
+                        {"members", f.members}, {"powers", f.powers}});
+  nlohmann::json timings = nlohmann::json::object();
+  for (const StageTiming& t : result.timings) timings[t.stage] = t.seconds;
+  const SymmetryStats& st = result.stats;
+  return {{"symmetries", symmetries},
+          {"families", families},
+          {"note", result.note},
+          {"stats",
+           {{"keypoints", st.keypoints},
+            {"pair_transforms", st.pair_transforms},
+            {"candidates", st.candidates},
+            {"verified", st.verified},
+            {"rejected_early", st.rejected_early},
+            {"rejected_small", st.rejected_small},
+            {"seconds_per_verified", st.seconds_per_verified}}},
+          {"timings_s", timings}};
+}
+
+void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
+                             const SymmetryResult& result, std::size_t top) {
+  if (prepared.model.is_point_cloud()) throw InputError("-o pictures are made for meshes only (this model is a point cloud)");
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InputError(folder.string() + ": cannot create the output folder");
+  const VoxelSurface& surface = prepared.surface;
+  std::vector<std::uint32_t> piece_cells;
+  const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
+  const CellMatcher matcher(surface, nullptr);
+  for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
+    const DetectedSymmetry& s = result.symmetries[i];
+    enum : std::uint8_t { grey = 0, pink = 1, red = 2, blue = 4 };
+    std::vector<std::uint8_t> state(surface.cell_count(), grey);
+    for (std::uint32_t c : s.region.symmetric_cells) state[c] = pink;
+    for (std::uint32_t c : s.region.r_symmetric_cells) state[c] = red;
+    for (std::uint32_t c : s.region.r_symmetric_cells) {
+      const std::int64_t image = matcher.image_cell(c, s.transform);
+      if (image >= 0) state[static_cast<std::size_t>(image)] |= blue;
+    }
+    std::vector<Rgb> colors(pieces.positions.size());
+    for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
+      const std::uint8_t st = state[piece_cells[t]];
+      Rgb color{170, 170, 170};
+      if (st & blue) color = (st & red) ? Rgb{150, 60, 200} : Rgb{40, 90, 220};
+      else if (st & red) color = Rgb{220, 40, 40};
+      else if (st & pink) color = Rgb{240, 160, 160};
+      for (std::uint32_t v : pieces.triangles[t]) colors[v] = color;
+    }
+    write_mesh(folder / fmt::format("symmetry_{:02}.ply", i + 1), pieces, &colors);
+  }
+}
+
+}  // namespace dg::cli

@@ -1,0 +1,26 @@
+#pragma once
+// Text and JSON reports of detected symmetries, and their coloured pictures.
+
+#include "geometry/prepared_model.h"
+#include "symmetry/symmetry_detection.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace dg::cli {
+
+/// Readable table of the first `top` symmetries (kind, motion, areas, family).
+std::string symmetry_table(const SymmetryResult& result, std::size_t top);
+
+/// {"symmetries": [...], "families": [...], "stats": {...}, "timings_s": {...}} for the first `top`.
+nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top);
+
+/// Writes DIR/symmetry_NN.ply (vertex colours) and DIR/symmetry_NN.png for the first `top`
+/// symmetries: r-symmetric area red, symmetric but within r of its border pink, the image of
+/// the r-symmetric area under T blue (violet where both), the rest grey.
+void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
+                             const SymmetryResult& result, std::size_t top);
+
+}  // namespace dg::cli
