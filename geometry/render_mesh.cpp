@@ -74,6 +74,7 @@ BoundingBox scene_bounds(const TriangleMesh& mesh, const std::vector<SceneLine>&
     }
   for (const SceneLine& line : lines)
     for (const Vec3& p : line.points) box.add(p);
+  if (!std::isfinite(box.diagonal())) throw InputError("picture: model coordinates are too large");
   return box;
 }
 
@@ -107,10 +108,10 @@ float depth_step(const Vec3& normal, const Camera& camera) {
 }
 
 // Facing normal and shaded colour of every triangle: two-sided Lambert plus ambient, with
-// the light a little above and left of the viewer.
+// the light left of and a little above the viewer.
 std::vector<Shade> shade_triangles(const TriangleMesh& mesh, const std::vector<Rgba8>& triangle_colors,
                                    const MeshRenderOptions& options, const Camera& camera) {
-  const Vec3 light = (camera.toward + 0.45 * camera.up - 0.3 * camera.right).normalized();
+  const Vec3 light = (camera.toward + 0.25 * camera.up - 0.5 * camera.right).normalized();
   std::vector<Shade> shades(mesh.triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shades.size(), 4096), [&](const auto& range) {
     for (std::size_t t = range.begin(); t < range.end(); ++t) {

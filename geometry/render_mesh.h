@@ -43,8 +43,8 @@ struct SceneLine {
 
 /// Renders `mesh` into a picture of options.width x options.height pixels.
 /// `triangle_colors` holds one colour per triangle (alpha ignored) or is empty (default_color).
-/// Shading: two-sided Lambert with ambient under a light near the viewer (slightly from the upper
-/// left), so back faces and inverted normals look like front faces. `lines` are drawn in order
+/// Shading: two-sided Lambert with ambient under a light near the viewer (somewhat from the left
+/// and a little from above), so back faces and inverted normals look like front faces. `lines` are drawn in order
 /// on top, anti-aliased, each hidden where the mesh is nearer (unless depth_test is false).
 /// An empty mesh gives the background (plus the lines). The output is byte-identical for equal
 /// input with any thread count. Throws InputError for out-of-range options, a colour count that

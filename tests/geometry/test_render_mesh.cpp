@@ -115,6 +115,22 @@ TEST_CASE("overlay lines appear on top, and depth-tested lines hide behind neare
   CHECK(greenish(on_top.at(100, y)));
 }
 
+TEST_CASE("a curve lying on a sphere shows in front and hides behind it", "[geometry][render]") {
+  const dg::TriangleMesh sphere = dg::test::make_sphere(Vec3(0, 0, 0), 1, 16, 32);  // poles on z
+  dg::SceneLine equator{{}, green, 3};
+  for (std::uint32_t v = 1 + 7 * 32; v < 1 + 8 * 32; ++v) equator.points.push_back(sphere.positions[v]);
+  equator.points.push_back(equator.points.front());
+  dg::MeshRenderOptions options = front_view();
+  options.camera.up = Vec3(0, 0, 1);
+  options.camera.elevation_degrees = 30;
+  const dg::Image image = dg::render_mesh(sphere, std::vector<Rgba8>(sphere.triangles.size(), red), {equator}, options);
+  // Seen from 30 degrees up, the equator's front point lies half a radius below the centre and
+  // its back point half a radius above it, where the sphere hides it.
+  const int half_radius = static_cast<int>(std::lround(0.25 * options.height * (1 - 2 * options.camera.margin_fraction)));
+  CHECK(greenish(image.at(100, 75 + half_radius)));
+  CHECK(reddish(image.at(100, 75 - half_radius)));
+}
+
 TEST_CASE("mesh pictures are identical across runs and thread counts", "[geometry][render]") {
   dg::TriangleMesh mesh = dg::test::make_sphere(Vec3(0, 0, 0), 1, 40, 80);
   dg::test::append(mesh, dg::test::make_box(Vec3(0.5, -1.5, -0.3), Vec3(1.5, 1.5, 0.3)));
