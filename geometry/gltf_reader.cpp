@@ -4,6 +4,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/model_reader.h"
+#include "geometry/text_reader.h"
 
 #include <nlohmann/json.hpp>
 
@@ -283,7 +284,7 @@ void add_primitive(const GltfDocument& doc, const json& primitive, const Mat4& w
     indices.reserve(raw.size());
     for (double value : raw) {
       if (!(value >= 0.0) || value >= static_cast<double>(vertex_count) || value != std::floor(value)) {
-        doc.fail("index " + std::to_string(value) + " out of range (primitive has " + std::to_string(vertex_count) +
+        doc.fail("index " + format_number(value) + " out of range (primitive has " + std::to_string(vertex_count) +
                  " vertices)");
       }
       indices.push_back(static_cast<std::uint32_t>(value));

@@ -6,6 +6,7 @@
 #include "geometry/errors.h"
 #include "geometry/mesh_writer.h"
 #include "geometry/model_reader.h"
+#include "geometry/text_reader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -58,7 +59,7 @@ void check_coordinates(const std::string& name, const std::vector<Vec3>& points,
       }
       if (std::abs(value) > max_coordinate) {
         throw InputError(name + ": " + what + " " + std::to_string(i) + " has a coordinate beyond 1e15 (" +
-                         std::to_string(value) + ")");
+                         detail::format_number(value) + ")");
       }
     }
   }

@@ -32,7 +32,6 @@ struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
   std::vector<PlyProperty> properties;
-  std::size_t header_line = 0;
 };
 
 struct PlyHeader {
@@ -106,7 +105,6 @@ PlyHeader parse_header(const std::string& name, std::string_view bytes) {
     } else if (keyword == "element") {
       PlyElement element;
       element.name = std::string(next_token(rest));
-      element.header_line = n;
       if (element.name.empty() || !read_number(rest, element.count)) {
         throw_line_error(name, n, "malformed element line (expected 'element <name> <count>')");
       }
@@ -219,7 +217,7 @@ std::size_t min_instance_size(const PlyElement& element, bool ascii) {
 std::uint64_t read_integer(BodyReader& body, ScalarType type, const std::string& name, const char* what) {
   const double value = body.read(type);
   if (!(value >= 0.0) || value != std::floor(value) || value > 4294967295.0) {
-    throw InputError(name + ": invalid " + what + " " + std::to_string(value) +
+    throw InputError(name + ": invalid " + what + " " + format_number(value) +
                      (body.ascii() ? " at line " + std::to_string(body.line()) : std::string()));
   }
   return static_cast<std::uint64_t>(value);

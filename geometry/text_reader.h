@@ -110,6 +110,13 @@ bool read_number(std::string_view& s, Number& value) {
   return parse_number(next_token(s), value);
 }
 
+/// Shortest decimal form of `value` for messages ("7", "-1.5", "2e+15").
+inline std::string format_number(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
 /// Throws InputError "<file>: line <n>: <problem>".
 [[noreturn]] inline void throw_line_error(const std::string& file, std::size_t line, const std::string& problem) {
   throw InputError(file + ": line " + std::to_string(line) + ": " + problem);
