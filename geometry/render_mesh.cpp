@@ -17,6 +17,8 @@ namespace {
 
 using Vec3f = Eigen::Vector3f;
 
+constexpr std::uint64_t max_samples = std::uint64_t{1} << 28;  // about 3 GB of sample buffers
+
 // What a triangle looks like in the picture: its normal turned towards the viewer, its shaded
 // colour, and how many pixel sizes its depth may change from one sample to the next (with slack).
 struct Shade {
@@ -39,6 +41,12 @@ void check_options(const TriangleMesh& mesh, const std::vector<Rgba8>& triangle_
                      std::to_string(options.height));
   if (options.supersample < 1 || options.supersample > 8)
     throw InputError("supersample must be 1..8, got " + std::to_string(options.supersample));
+  const auto samples = static_cast<std::uint64_t>(options.width) * static_cast<std::uint64_t>(options.height) *
+                       static_cast<std::uint64_t>(options.supersample * options.supersample);
+  if (samples > max_samples)
+    throw InputError("picture too large: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                     " pixels with supersample " + std::to_string(options.supersample) +
+                     " need more than 2^28 samples; lower the size or the supersampling");
   if (!(options.camera.margin_fraction >= 0 && options.camera.margin_fraction <= 0.45))
     throw InputError("camera margin must be a fraction in [0, 0.45]");
   if (!(options.crease_degrees >= 0 && options.crease_degrees <= 180))

@@ -19,6 +19,7 @@ struct MeshRenderOptions {
   /// margin; the camera is fitted so that the whole model and all lines are visible.
   CameraSetup camera;
   /// Samples per pixel along each axis, 1..8; the samples are averaged (box filter).
+  /// width x height x supersample^2 may not exceed 2^28.
   int supersample = 2;
   Rgba8 background{255, 255, 255, 255};
   /// Colour of every triangle when no per-triangle colours are given.

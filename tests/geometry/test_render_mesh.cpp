@@ -204,6 +204,9 @@ TEST_CASE("an empty mesh gives the background, bad input a clear InputError", "[
   bad.supersample = 0;
   CHECK_THROWS_AS(dg::render_mesh(cube, {}, {}, bad), dg::InputError);
   bad = {};
+  bad.width = bad.height = 16384;
+  CHECK_THROWS_AS(dg::render_mesh(cube, {}, {}, bad), dg::InputError);  // too many samples
+  bad = {};
   bad.width = 0;
   CHECK_THROWS_AS(dg::render_mesh(cube, {}, {}, bad), dg::InputError);
   bad = {};
