@@ -24,6 +24,8 @@ TEST_CASE("the turtle draws, turns and moves with the corpus conventions", "[syn
   const dg::Vec2 start = d.strokes[2].path.commands[0].points[0];
   CHECK(start.isApprox(dg::Vec2(10 + std::sqrt(2.0), 10 + std::sqrt(2.0))));
   CHECK(d.strokes[2].module_index == 5);
+  const dg::Drawing back = draw("axiom: F|F\n");  // | turns around
+  CHECK((end_of(back.strokes[1]) - dg::Vec2(0, 0)).norm() < 1e-12);
 }
 
 TEST_CASE("brackets restore position, heading and scale; scale multiplies lengths", "[synthesis]") {

@@ -81,7 +81,12 @@ void run_derive(const DeriveOptions& options) {
   derivation_options.steps = options.iterations;
   derivation_options.seed = options.seed;
   derivation_options.limits.max_modules = options.max_modules;
-  const Derivation derivation = derive(system, derivation_options);
+  Derivation derivation;
+  try {
+    derivation = derive(system, derivation_options);
+  } catch (const InputError& error) {
+    throw InputError(options.input + ": " + error.what());
+  }
 
   TurtleOptions turtle;
   try {
