@@ -108,6 +108,7 @@ void parse_setting(std::string_view line, std::string_view key, std::string_view
 LSystem parse_lsystem_text(std::string_view text, const std::string& source) {
   LSystem system;
   bool has_axiom = false;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
   std::size_t number = 0;
   for (std::size_t start = 0; start <= text.size();) {
     const std::size_t newline = text.find('\n', start);

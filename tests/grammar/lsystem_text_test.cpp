@@ -52,6 +52,7 @@ TEST_CASE("the text form reads string rules, stochastic weights and turtle setti
   CHECK(system.productions[2].predecessor == "P0");
   CHECK(system.productions[2].formals == std::vector<std::string>{"m", "n"});
   CHECK(system.productions[3].successor.empty());
+  CHECK(dg::parse_lsystem_text("\xEF\xBB\xBF" "axiom: F\n", "bom.ls").axiom.size() == 1);
 }
 
 TEST_CASE("printing the text form and parsing it again gives the same system", "[grammar]") {
