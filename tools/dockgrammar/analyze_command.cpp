@@ -1,39 +1,67 @@
-// `dockgrammar analyze MODEL`: the full analysis. The stages after the voxel surface and the
-// feature lines (symmetry detection, docking sites, grammar rules) are not built yet; the
-// command runs what exists and says where it stopped.
+// `dockgrammar analyze MODEL`: symmetries, grid rules, the grammar file, a report and pictures.
+// Context-free rules from docking sites are not built yet; the report says so.
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/grammar_report.h"
 #include "tools/dockgrammar/model_options.h"
-#include "tools/dockgrammar/model_summary.h"
+
+#include "grammar/grammar_file.h"
+#include "grammar/grid_rules.h"
+#include "symmetry/symmetry_detection.h"
 
 #include <fmt/core.h>
 
-#include <cstdio>
+#include <chrono>
+#include <filesystem>
 #include <memory>
 
 namespace dg::cli {
 
-namespace {
-constexpr const char* kStoppedAfter =
-    "analyze stopped after loading, cleaning, feature lines and the voxel surface: symmetry detection, "
-    "docking sites and grammar rules are not implemented yet, so no grammar file was written";
-}
-
 void add_analyze_command(CLI::App& app) {
-  auto options = std::make_shared<ModelOptions>();
-  CLI::App* command = app.add_subcommand("analyze", "Find the rules that build a model (currently: the stages up to the voxel surface)");
-  add_model_options(*command, *options);
+  struct Options {
+    ModelOptions model;
+    std::string output = ".";
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "analyze", "Find the symmetries and grid rules of a model; write NAME.grammar.json, NAME.report.md and pictures");
+  add_model_options(*command, options->model);
+  command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->callback([options] {
-    const PreparedModel prepared = prepare(*options);
-    if (options->json) {
-      nlohmann::json summary = summary_json(prepared);
-      summary["completed"] = false;
-      summary["note"] = kStoppedAfter;
-      fmt::print("{}\n", summary.dump(2));
-    } else {
-      fmt::print("{}", summary_text(prepared));
+    const auto threads = limit_threads(options->model.threads);
+    const ProgressCallback progress = stderr_progress(options->model.quiet);
+    const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
+    if (prepared.model.is_point_cloud())
+      throw InputError(options->model.model_path + ": analyze needs a mesh; point clouds are supported by info and symmetry");
+    const SymmetryResult symmetries = detect_symmetries(prepared, {}, progress);
+
+    const auto start = std::chrono::steady_clock::now();
+    ShapeGrammar grammar;
+    grammar.source_name = std::filesystem::path(options->model.model_path).filename().string();
+    grammar.source_hash = file_hash(options->model.model_path);
+    grammar.r = prepared.surface.r();
+    grammar.eps = prepared.surface.eps();
+    grammar.exemplar = prepared.model.mesh;
+    for (GridRule& rule : find_grids(prepared, symmetries)) {
+      std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
+      grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
-    fmt::print(stderr, "dockgrammar: {}\n", kStoppedAfter);
+    const double grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    const std::filesystem::path folder(options->output);
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw InputError(folder.string() + ": cannot create the output folder");
+    std::string stem = std::filesystem::path(options->model.model_path).stem().string();
+    const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
+    write_grammar(grammar_path, grammar);
+    AnalysisReport report{prepared, symmetries, grammar, grid_seconds, grammar_path};
+    write_analysis_report(folder / (stem + ".report.md"), report);
+    write_analysis_pictures(folder, stem, report);
+    if (options->model.json)
+      fmt::print("{}\n", analysis_json(report).dump(2));
+    else
+      fmt::print("{}", analysis_text(report));
   });
 }
 

@@ -9,6 +9,7 @@ namespace dg::cli {
 void add_info_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_symmetry_command(CLI::App& app);
+void add_resize_command(CLI::App& app);
 void add_lsystem_command(CLI::App& app);
 
 }  // namespace dg::cli

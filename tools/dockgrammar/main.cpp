@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   dg::cli::add_info_command(app);
   dg::cli::add_analyze_command(app);
   dg::cli::add_symmetry_command(app);
+  dg::cli::add_resize_command(app);
   dg::cli::add_lsystem_command(app);
   try {
     app.parse(argc, argv);

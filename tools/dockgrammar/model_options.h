@@ -2,6 +2,7 @@
 // Options shared by the subcommands that read one model: the path, r, voxel size, threads,
 // quiet and JSON switches, and the stderr progress display.
 
+#include "geometry/errors.h"
 #include "geometry/prepared_model.h"
 
 #include <CLI/CLI.hpp>

@@ -3,6 +3,7 @@
 #include "geometry/cell_pieces.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "tools/dockgrammar/pictures.h"
 
 #include <fmt/format.h>
 
@@ -120,6 +121,7 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
       if (image >= 0) state[static_cast<std::size_t>(image)] |= blue;
     }
     std::vector<Rgb> colors(pieces.positions.size());
+    std::vector<Rgba8> triangle_colors(pieces.triangles.size());
     for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
       const std::uint8_t st = state[piece_cells[t]];
       Rgb color{170, 170, 170};
@@ -127,8 +129,12 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
       else if (st & red) color = Rgb{220, 40, 40};
       else if (st & pink) color = Rgb{240, 160, 160};
       for (std::uint32_t v : pieces.triangles[t]) colors[v] = color;
+      triangle_colors[t] = {color[0], color[1], color[2], 255};
     }
     write_mesh(folder / fmt::format("symmetry_{:02}.ply", i + 1), pieces, &colors);
+    MeshRenderOptions options = picture_options(prepared.model.mesh);
+    options.draw_edges = false;  // the cell pieces would outline every voxel
+    write_mesh_picture(folder / fmt::format("symmetry_{:02}.png", i + 1), pieces, triangle_colors, {}, options);
   }
 }
 

@@ -1,0 +1,134 @@
+#include "geometry/slab_cut.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace dg {
+namespace {
+
+// Splits every triangle along one plane n . x = offset.
+TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, double offset, double tolerance) {
+  TriangleMesh out;
+  out.positions = mesh.positions;
+  std::vector<double> side(out.positions.size());
+  for (std::size_t v = 0; v < out.positions.size(); ++v) {
+    double d = normal.dot(out.positions[v]) - offset;
+    if (std::abs(d) <= tolerance && d != 0.0) {
+      out.positions[v] -= d * normal;  // snap onto the plane
+      d = 0.0;
+    }
+    side[v] = d;
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> crossings;
+  auto crossing = [&](std::uint32_t a, std::uint32_t b) {
+    const auto key = std::minmax(a, b);
+    const auto found = crossings.find(key);
+    if (found != crossings.end()) return found->second;
+    const std::uint32_t lo = key.first, hi = key.second;  // same arithmetic from both triangles
+    const double t = side[lo] / (side[lo] - side[hi]);
+    const Vec3 p = out.positions[lo] + t * (out.positions[hi] - out.positions[lo]);
+    const auto index = static_cast<std::uint32_t>(out.positions.size());
+    out.positions.push_back(p - (normal.dot(p) - offset) * normal);
+    side.push_back(0.0);
+    crossings.emplace(key, index);
+    return index;
+  };
+  for (const Triangle& tri : mesh.triangles) {
+    // Rotate so that the corner alone on its side (if any) comes first.
+    int alone = -1;
+    for (int k = 0; k < 3; ++k) {
+      const double a = side[tri[k]], b = side[tri[(k + 1) % 3]], c = side[tri[(k + 2) % 3]];
+      if ((a > 0.0 && b < 0.0 && c < 0.0) || (a < 0.0 && b > 0.0 && c > 0.0) || (a > 0.0 && b < 0.0 && c == 0.0) ||
+          (a < 0.0 && b > 0.0 && c == 0.0) || (a > 0.0 && b == 0.0 && c < 0.0) || (a < 0.0 && b == 0.0 && c > 0.0)) {
+        alone = k;
+        break;
+      }
+    }
+    if (alone < 0) {
+      out.triangles.push_back(tri);
+      continue;
+    }
+    const std::uint32_t a = tri[alone], b = tri[(alone + 1) % 3], c = tri[(alone + 2) % 3];
+    if (side[c] == 0.0) {  // plane through c: two triangles
+      const std::uint32_t ab = crossing(a, b);
+      out.triangles.push_back({a, ab, c});
+      out.triangles.push_back({ab, b, c});
+    } else if (side[b] == 0.0) {  // plane through b
+      const std::uint32_t ca = crossing(c, a);
+      out.triangles.push_back({a, b, ca});
+      out.triangles.push_back({ca, b, c});
+    } else {  // a alone: one triangle on its side, two on the other
+      const std::uint32_t ab = crossing(a, b), ca = crossing(c, a);
+      out.triangles.push_back({a, ab, ca});
+      out.triangles.push_back({ab, b, c});
+      out.triangles.push_back({ab, c, ca});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, const std::vector<double>& cuts,
+                              double tolerance) {
+  TriangleMesh result = mesh;
+  for (double offset : cuts) result = cut_along_plane(result, direction, offset, tolerance);
+  return result;
+}
+
+std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& direction, const std::vector<double>& cuts) {
+  const auto [a, b, c] = mesh.corners(t);
+  const double s = direction.dot((a + b + c) / 3.0);
+  return static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), s) - cuts.begin());
+}
+
+void weld_vertices(TriangleMesh& mesh, double tolerance) {
+  const double cell = std::max(tolerance, 1e-300) * 4.0;
+  auto key = [&](const Vec3& p) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / cell)),
+                                       static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                                       static_cast<std::int64_t>(std::floor(p.z() / cell))};
+  };
+  struct KeyHash {
+    std::size_t operator()(const std::array<std::int64_t, 3>& k) const {
+      return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
+    }
+  };
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, KeyHash> buckets;
+  std::vector<std::uint32_t> remap(mesh.positions.size());
+  std::vector<Vec3> kept;
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    const auto k = key(p);
+    long found = -1;
+    for (std::int64_t dx = -1; dx <= 1 && found < 0; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && found < 0; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && found < 0; ++dz) {
+          const auto bucket = buckets.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (bucket == buckets.end()) continue;
+          for (std::uint32_t w : bucket->second)
+            if ((kept[w] - p).norm() <= tolerance) {
+              found = w;
+              break;
+            }
+        }
+    if (found < 0) {
+      found = static_cast<long>(kept.size());
+      kept.push_back(p);
+      buckets[k].push_back(static_cast<std::uint32_t>(found));
+    }
+    remap[v] = static_cast<std::uint32_t>(found);
+  }
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) {
+    const Triangle w{remap[t[0]], remap[t[1]], remap[t[2]]};
+    if (w[0] != w[1] && w[1] != w[2] && w[2] != w[0]) triangles.push_back(w);
+  }
+  mesh.positions = std::move(kept);
+  mesh.triangles = std::move(triangles);
+}
+
+}  // namespace dg

@@ -1,0 +1,25 @@
+#pragma once
+// Cutting a mesh along parallel planes, so every triangle lies in one slab between two planes.
+// Grid pieces (corners, borders, repeated units) are cut this way.
+
+#include "geometry/mesh.h"
+
+#include <vector>
+
+namespace dg {
+
+/// Splits the triangles of `mesh` along the planes direction . x = cuts[i] (direction unit,
+/// model units). An edge crossing a plane gets one new vertex shared by both of its triangles,
+/// so a closed mesh stays closed; vertices within `tolerance` of a plane are moved onto it.
+TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, const std::vector<double>& cuts,
+                              double tolerance);
+
+/// Index of the slab holding triangle t of `mesh`, judged by its centroid: 0 below cuts[0],
+/// i between cuts[i-1] and cuts[i], cuts.size() above the last (cuts ascending).
+std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& direction, const std::vector<double>& cuts);
+
+/// Merges vertices closer than `tolerance` (model units) into the first of them (in index
+/// order) and drops triangles that become degenerate. Deterministic.
+void weld_vertices(TriangleMesh& mesh, double tolerance);
+
+}  // namespace dg

@@ -1,0 +1,14 @@
+#pragma once
+// Closing seams whose two sides were triangulated differently: a vertex of one side lying on
+// an edge of the other (a T-junction) splits that edge, so the seam becomes shared edges.
+
+#include "geometry/mesh.h"
+
+namespace dg {
+
+/// Splits every boundary edge at the boundary vertices lying on it (within `tolerance` model
+/// units, strictly between its ends), then welds vertices closer than `tolerance`. Returns the
+/// number of edge splits. Assembled pieces whose seams coincide geometrically become closed.
+std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance);
+
+}  // namespace dg

@@ -1,0 +1,162 @@
+#include "grammar/grammar_file.h"
+
+#include "geometry/atomic_file.h"
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+
+namespace dg {
+namespace {
+
+nlohmann::json matrix_json(const Vec3& translation) {
+  Mat4 m = Mat4::Identity();
+  m.topRightCorner<3, 1>() = translation;
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
+  return rows;
+}
+
+std::filesystem::path pieces_folder(const std::filesystem::path& path) {
+  std::string stem = path.filename().string();
+  if (stem.size() > 5 && stem.ends_with(".json")) stem.resize(stem.size() - 5);
+  return path.parent_path() / (stem + ".pieces");
+}
+
+template <class T>
+T field(const nlohmann::json& object, const char* key, const std::string& where) {
+  if (!object.is_object() || !object.contains(key)) throw InputError(where + ": missing field \"" + key + "\"");
+  try {
+    return object.at(key).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(where + ": field \"" + key + "\" has the wrong type");
+  }
+}
+
+}  // namespace
+
+std::string file_hash(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read");
+  std::uint64_t hash = 1469598103934665603ull;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+      hash ^= static_cast<unsigned char>(buffer[i]);
+      hash *= 1099511628211ull;
+    }
+  }
+  return fmt::format("{:016x}", hash);
+}
+
+void write_grammar(const std::filesystem::path& path, const ShapeGrammar& grammar) {
+  const std::filesystem::path folder = pieces_folder(path);
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InputError(folder.string() + ": cannot create the folder for grammar pieces");
+  const std::string folder_name = folder.filename().string();
+
+  write_mesh(folder / "exemplar.ply", grammar.exemplar);
+  nlohmann::json grids = nlohmann::json::array();
+  for (const GridWithPieces& grid : grammar.grids) {
+    nlohmann::json directions = nlohmann::json::array(), transforms = nlohmann::json::array(), counts = nlohmann::json::array();
+    for (const GridDirection& d : grid.rule.directions) {
+      directions.push_back({{"translation", {d.translation.x(), d.translation.y(), d.translation.z()}},
+                            {"pitch", d.pitch},
+                            {"cut", d.cut},
+                            {"count", d.count}});
+      transforms.push_back(matrix_json(d.translation));
+      counts.push_back(d.count);
+    }
+    nlohmann::json pieces = nlohmann::json::array();
+    for (const GridPiece& piece : grid.pieces) {
+      const std::string file = grid.rule.name + "_" + piece_name(piece.classes) + ".ply";
+      write_mesh(folder / file, piece.mesh);
+      pieces.push_back({{"name", piece_name(piece.classes)},
+                        {"classes", piece.classes},
+                        {"file", folder_name + "/" + file},
+                        {"triangles", piece.mesh.triangles.size()}});
+    }
+    grids.push_back({{"name", grid.rule.name},
+                     {"dims", grid.rule.directions.size()},
+                     {"counts", counts},
+                     {"transforms", transforms},
+                     {"count_range", {grid.rule.min_count, grid.rule.max_count}},
+                     {"directions", directions},
+                     {"pieces", pieces}});
+  }
+  const nlohmann::json document = {{"format", "dockgrammar-grammar"},
+                                   {"version", kGrammarFileVersion},
+                                   {"units", "model units of the source file"},
+                                   {"source", {{"name", grammar.source_name}, {"hash_fnv1a64", grammar.source_hash}}},
+                                   {"r", grammar.r},
+                                   {"eps", grammar.eps},
+                                   {"exemplar", folder_name + "/exemplar.ply"},
+                                   {"grids", grids},
+                                   {"nonterminals", nlohmann::json::array()},
+                                   {"productions", nlohmann::json::array()}};
+  write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << '\n'; }, false);
+}
+
+ShapeGrammar read_grammar(const std::filesystem::path& path) {
+  const std::string where = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(where + ": cannot read the grammar file");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+  if (document.is_discarded()) throw InputError(where + ": not valid JSON (truncated or not a grammar file)");
+  if (field<std::string>(document, "format", where) != "dockgrammar-grammar")
+    throw InputError(where + ": not a dockgrammar grammar file");
+  const int version = field<int>(document, "version", where);
+  if (version != kGrammarFileVersion)
+    throw InputError(fmt::format("{}: grammar file version {} is not supported (this program reads version {})", where,
+                                 version, kGrammarFileVersion));
+  ShapeGrammar grammar;
+  const nlohmann::json source = field<nlohmann::json>(document, "source", where);
+  grammar.source_name = field<std::string>(source, "name", where);
+  grammar.source_hash = field<std::string>(source, "hash_fnv1a64", where);
+  grammar.r = field<double>(document, "r", where);
+  grammar.eps = field<double>(document, "eps", where);
+  auto load = [&](const std::string& relative) {
+    const std::filesystem::path file = path.parent_path() / relative;
+    if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar mesh " + file.string() + " is missing");
+    Model model = read_model(file);
+    return std::move(model.mesh);
+  };
+  grammar.exemplar = load(field<std::string>(document, "exemplar", where));
+  for (const nlohmann::json& grid : field<nlohmann::json>(document, "grids", where)) {
+    GridWithPieces entry;
+    entry.rule.name = field<std::string>(grid, "name", where);
+    const auto range = field<std::vector<int>>(grid, "count_range", where);
+    if (range.size() != 2) throw InputError(where + ": count_range must have two numbers");
+    entry.rule.min_count = range[0];
+    entry.rule.max_count = range[1];
+    for (const nlohmann::json& d : field<nlohmann::json>(grid, "directions", where)) {
+      GridDirection direction;
+      const auto t = field<std::vector<double>>(d, "translation", where);
+      if (t.size() != 3) throw InputError(where + ": a grid translation needs three numbers");
+      direction.translation = Vec3(t[0], t[1], t[2]);
+      direction.pitch = field<double>(d, "pitch", where);
+      if (!(direction.pitch > 0.0)) throw InputError(where + ": a grid pitch must be positive");
+      direction.direction = direction.translation / direction.translation.norm();
+      direction.cut = field<double>(d, "cut", where);
+      direction.count = field<int>(d, "count", where);
+      entry.rule.directions.push_back(direction);
+    }
+    for (const nlohmann::json& p : field<nlohmann::json>(grid, "pieces", where)) {
+      GridPiece piece;
+      piece.classes = field<std::vector<int>>(p, "classes", where);
+      if (piece.classes.size() != entry.rule.directions.size())
+        throw InputError(where + ": piece " + field<std::string>(p, "name", where) + " has the wrong number of classes");
+      piece.mesh = load(field<std::string>(p, "file", where));
+      entry.pieces.push_back(std::move(piece));
+    }
+    grammar.grids.push_back(std::move(entry));
+  }
+  return grammar;
+}
+
+}  // namespace dg

@@ -1,0 +1,44 @@
+#pragma once
+// The grammar file written by `analyze` and read by `generate`/`resize`: versioned JSON with
+// sidecar piece meshes (binary PLY) in a folder next to it. Documented in docs/grammar-file.md.
+
+#include "grammar/grid_rules.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dg {
+
+inline constexpr int kGrammarFileVersion = 1;
+
+/// A grid rule with its pieces and where they are stored.
+struct GridWithPieces {
+  GridRule rule;
+  std::vector<GridPiece> pieces;
+};
+
+struct ShapeGrammar {
+  std::string source_name;    ///< file name of the exemplar
+  std::string source_hash;    ///< FNV-1a 64-bit hash of the exemplar file's bytes, hex
+  double r = 0.0, eps = 0.0;  ///< model units
+  std::vector<GridWithPieces> grids;
+  /// The exemplar's cleaned mesh (used when no grid is resized and for reference).
+  TriangleMesh exemplar;
+};
+
+/// Hex FNV-1a 64-bit hash of a file's bytes (throws InputError when unreadable).
+std::string file_hash(const std::filesystem::path& path);
+
+/// Writes `grammar` to `path` (JSON) and its meshes to the folder `path` minus ".json" plus
+/// ".pieces/", every file atomically.
+void write_grammar(const std::filesystem::path& path, const ShapeGrammar& grammar);
+
+/// Reads a grammar file and its sidecar meshes. Throws InputError naming the file and the
+/// problem: unreadable, not JSON, wrong version, missing field, missing or broken sidecar.
+ShapeGrammar read_grammar(const std::filesystem::path& path);
+
+}  // namespace dg

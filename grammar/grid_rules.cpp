@@ -1,0 +1,232 @@
+#include "grammar/grid_rules.h"
+
+#include "geometry/slab_cut.h"
+#include "symmetry/symmetric_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace dg {
+namespace {
+
+// Sorted, merged intervals of the line where a cut plane may not go.
+class Blocked {
+ public:
+  void add(double lo, double hi) { intervals_.emplace_back(lo, hi); }
+  void finish() {
+    std::sort(intervals_.begin(), intervals_.end());
+    std::vector<std::pair<double, double>> merged;
+    for (const auto& iv : intervals_) {
+      if (!merged.empty() && iv.first <= merged.back().second)
+        merged.back().second = std::max(merged.back().second, iv.second);
+      else
+        merged.push_back(iv);
+    }
+    intervals_ = std::move(merged);
+  }
+  /// Distance from s to the nearest blocked interval (0 inside one, infinity when none).
+  double clearance(double s) const {
+    auto it = std::upper_bound(intervals_.begin(), intervals_.end(), std::make_pair(s, std::numeric_limits<double>::infinity()));
+    double distance = std::numeric_limits<double>::infinity();
+    if (it != intervals_.end()) distance = std::min(distance, it->first - s);
+    if (it != intervals_.begin()) distance = std::min(distance, std::max(0.0, s - std::prev(it)->second));
+    return distance;
+  }
+  bool contains(double s) const {
+    auto it = std::upper_bound(intervals_.begin(), intervals_.end(), std::make_pair(s, std::numeric_limits<double>::infinity()));
+    return it != intervals_.begin() && std::prev(it)->second >= s;
+  }
+
+ private:
+  std::vector<std::pair<double, double>> intervals_;
+};
+
+// The best chain of cut planes for one translation: the longest run of planes, each crossing
+// only r-symmetric cells (and the last only images of them), whose slabs are symmetric.
+std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
+                                            std::size_t symmetry_index, int min_repeats) {
+  const VoxelSurface& surface = prepared.surface;
+  const Vec3 t = symmetry.transform.translation;
+  const double pitch = t.norm();
+  if (pitch <= 0.0) return std::nullopt;
+  const Vec3 d = t / pitch;
+  const double half = 0.5 * surface.eps() * (std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()));
+
+  std::vector<char> in_r(surface.cell_count(), 0), in_xi(surface.cell_count(), 0), in_image(surface.cell_count(), 0);
+  for (std::uint32_t c : symmetry.region.r_symmetric_cells) in_r[c] = 1;
+  for (std::uint32_t c : symmetry.region.symmetric_cells) in_xi[c] = 1;
+  const CellMatcher matcher(surface, nullptr);
+  for (std::uint32_t c : symmetry.region.r_symmetric_cells) {
+    const std::int64_t image = matcher.image_cell(c, symmetry.transform);
+    if (image >= 0) in_image[static_cast<std::size_t>(image)] = 1;
+  }
+  Blocked forward, backward, asymmetric;
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+    const double s = d.dot(surface.centre(c));
+    if (!in_r[c]) forward.add(s - half, s + half);
+    if (!in_image[c]) backward.add(s - half, s + half);
+    if (!in_xi[c]) asymmetric.add(s - half, s + half);
+  }
+  forward.finish();
+  backward.finish();
+  asymmetric.finish();
+
+  // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
+  // plus every vertex coordinate (cuts through existing seams need no new vertices).
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  std::map<double, int> vertex_offsets;
+  for (const Vec3& p : prepared.model.mesh.positions) {
+    const double s = d.dot(p);
+    ++vertex_offsets[s];
+    lowest = std::min(lowest, s);
+    highest = std::max(highest, s);
+  }
+  std::map<double, int> phases;  // phase in [0, pitch) -> vertices on a plane at that phase
+  const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
+  for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
+  for (const auto& [s, n] : vertex_offsets) phases[std::fmod(s - lowest, pitch)] += n;
+
+  std::optional<GridDirection> best;
+  double best_clearance = -1.0;
+  int best_vertices = -1;
+  const double wanted_clearance = surface.r();
+  for (const auto& [phase, vertices] : phases) {
+    // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
+    for (double first = lowest + phase; first <= highest; first += pitch) {
+      if (forward.contains(first) || (first - pitch >= lowest && !forward.contains(first - pitch))) continue;  // not a run start
+      int count = 0;
+      while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
+      // The plane after the last unit must lie in the image of the r-symmetric area.
+      while (count > 0 && backward.contains(first + count * pitch)) --count;
+      // Every slab but the last maps onto the next: no asymmetric cell strictly inside them.
+      for (int k = 0; k + 1 < count; ++k) {
+        bool clean = true;
+        for (double s = first + k * pitch + half; s < first + (k + 1) * pitch - half; s += half)
+          if (asymmetric.contains(s)) {
+            clean = false;
+            break;
+          }
+        if (!clean) {
+          count = k + 1;
+          break;
+        }
+      }
+      if (count < min_repeats) continue;
+      double clearance = wanted_clearance;
+      for (int k = 0; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
+      clearance = std::min(clearance, backward.clearance(first + count * pitch));
+      const bool better = !best || count > best->count ||
+                          (count == best->count && (clearance > best_clearance + 1e-12 ||
+                                                    (clearance > best_clearance - 1e-12 && vertices > best_vertices)));
+      if (better) {
+        best = GridDirection{t, d, pitch, first, count, symmetry_index};
+        best_clearance = clearance;
+        best_vertices = vertices;
+      }
+    }
+  }
+  return best;
+}
+
+bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
+  if (chosen.empty()) return true;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> basis(3, static_cast<Eigen::Index>(chosen.size()));
+  for (std::size_t i = 0; i < chosen.size(); ++i) basis.col(static_cast<Eigen::Index>(i)) = chosen[i].direction;
+  const Vec3 unit = t.normalized();
+  const Eigen::VectorXd coefficients = basis.colPivHouseholderQr().solve(unit);
+  return (basis * coefficients - unit).norm() > 1e-3;
+}
+
+}  // namespace
+
+int slab_class(std::size_t slab, int count) {
+  if (slab == 0) return 0;
+  if (slab == 1) return 1;
+  if (slab == static_cast<std::size_t>(count) + 1) return 2;
+  return -1;
+}
+
+std::string piece_name(const std::vector<int>& classes) {
+  std::string name = "r";
+  for (int c : classes) name += std::to_string(c + 1);
+  return name;
+}
+
+std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                 const GridOptions& options) {
+  std::vector<GridRule> grids;
+  if (prepared.model.is_point_cloud()) return grids;
+  std::vector<GridDirection> directions;
+  for (const SymmetryFamily& family : symmetries.families) {
+    if (family.kind != "translation") continue;
+    // The generator is the family member with power 1.
+    for (std::size_t m = 0; m < family.members.size(); ++m) {
+      if (family.powers[m] != 1) continue;
+      const auto direction =
+          grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats);
+      if (direction) directions.push_back(*direction);
+    }
+  }
+  // Most units first; then combine independent directions into one grid.
+  // Ties keep a readable order: directions closest to x, then y, then z.
+  auto axis_of = [](const GridDirection& d) {
+    Eigen::Index axis = 0;
+    d.direction.cwiseAbs().maxCoeff(&axis);
+    return axis;
+  };
+  std::stable_sort(directions.begin(), directions.end(), [&](const GridDirection& a, const GridDirection& b) {
+    return a.count != b.count ? a.count > b.count : axis_of(a) < axis_of(b);
+  });
+  GridRule grid;
+  grid.name = "grid1";
+  grid.max_count = options.max_count;
+  for (const GridDirection& direction : directions)
+    if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions)) grid.directions.push_back(direction);
+  if (!grid.directions.empty()) grids.push_back(std::move(grid));
+  return grids;
+}
+
+std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  TriangleMesh cut = mesh;
+  std::vector<std::vector<double>> planes;
+  for (const GridDirection& direction : grid.directions) {
+    std::vector<double> offsets;
+    for (int j = 0; j <= direction.count; ++j) offsets.push_back(direction.cut + j * direction.pitch);
+    cut = cut_along_planes(cut, direction.direction, offsets, 1e-6 * eps);
+    planes.push_back(std::move(offsets));
+  }
+  std::map<std::vector<int>, TriangleMesh> by_class;
+  for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
+    std::vector<int> classes;
+    for (std::size_t i = 0; i < grid.directions.size(); ++i) {
+      const int c = slab_class(slab_of(cut, t, grid.directions[i].direction, planes[i]), grid.directions[i].count);
+      if (c < 0) break;
+      classes.push_back(c);
+    }
+    if (classes.size() != grid.directions.size()) continue;  // lies in a copy of a unit
+    by_class[classes].triangles.push_back(cut.triangles[t]);
+  }
+  std::vector<GridPiece> pieces;
+  for (auto& [classes, piece] : by_class) {
+    // Keep only the vertices the piece uses, in first-use order.
+    std::vector<std::int64_t> remap(cut.positions.size(), -1);
+    TriangleMesh compact;
+    for (const Triangle& tri : piece.triangles) {
+      Triangle mapped;
+      for (int k = 0; k < 3; ++k) {
+        if (remap[tri[k]] < 0) {
+          remap[tri[k]] = static_cast<std::int64_t>(compact.positions.size());
+          compact.positions.push_back(cut.positions[tri[k]]);
+        }
+        mapped[k] = static_cast<std::uint32_t>(remap[tri[k]]);
+      }
+      compact.triangles.push_back(mapped);
+    }
+    pieces.push_back({classes, std::move(compact)});
+  }
+  return pieces;
+}
+
+}  // namespace dg

@@ -1,0 +1,68 @@
+#pragma once
+// Grid rules (paper 001 §3.4.3) for translational repetitions: a k-grid cuts the model by k
+// families of parallel planes into corner, border and interior pieces; resizing places the
+// head piece of a direction once, the repeated unit N times and the tail piece once.
+//
+// A direction d with generator translation t (pitch p = |t|) has cut planes d . x = cut + j p,
+// j = 0 .. count. Each plane crosses only r-symmetric area, so every seam of a resized model
+// looks locally like a seam of the exemplar (r-similarity), and the `count` slabs between the
+// planes are exact copies of each other (they are symmetric under t), so count copies of the
+// first slab reproduce the exemplar.
+
+#include "geometry/mesh.h"
+#include "geometry/prepared_model.h"
+#include "symmetry/symmetry_detection.h"
+
+#include <string>
+#include <vector>
+
+namespace dg {
+
+/// One direction of a grid.
+struct GridDirection {
+  Vec3 translation = Vec3::Zero();  ///< generator t, model units
+  Vec3 direction = Vec3::UnitX();   ///< t / |t|
+  double pitch = 0.0;               ///< |t|
+  double cut = 0.0;                 ///< offset of the first cut plane along direction
+  int count = 0;                    ///< repeated units in the exemplar
+  std::size_t symmetry = 0;         ///< index of the generator in SymmetryResult::symmetries
+};
+
+/// A k-grid: its directions (counts[i] belongs to directions[i]) and the allowed count range.
+struct GridRule {
+  std::string name;
+  std::vector<GridDirection> directions;
+  int min_count = 0;     ///< every direction accepts counts in [min_count, max_count]
+  int max_count = 1000;
+};
+
+struct GridOptions {
+  int min_repeats = 2;  ///< a direction needs at least this many units to form a grid
+  int max_count = 1000; ///< largest count offered to resize
+};
+
+/// Finds translational grids from the detected symmetry families. Independent directions are
+/// combined into one k-grid (their cut planes are each valid over the whole model, and
+/// translations commute); directions that are sums of chosen ones are dropped.
+std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                 const GridOptions& options = {});
+
+/// Class of a slab along one direction: 0 = head (before the first plane), 1 = the repeated
+/// unit (the first slab after it), 2 = tail (after the last plane); -1 = a later unit (a copy,
+/// not stored).
+int slab_class(std::size_t slab, int count);
+
+/// A piece of a grid: the triangles whose slab classes along the directions are `classes`.
+struct GridPiece {
+  std::vector<int> classes;  ///< one of 0 (head), 1 (unit), 2 (tail) per direction
+  TriangleMesh mesh;
+};
+
+/// Cuts the cleaned model into the pieces of `grid` (classes with no triangles are left out).
+/// Piece names follow the paper: r11 .. r33 for a 2-grid (1 = head, 2 = unit, 3 = tail).
+std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps);
+
+/// "r" followed by 1-based classes, e.g. {0, 1} -> "r12".
+std::string piece_name(const std::vector<int>& classes);
+
+}  // namespace dg

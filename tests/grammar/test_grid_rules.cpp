@@ -1,0 +1,70 @@
+#include "grammar/grid_rules.h"
+
+#include "assets/generator/asset.h"
+#include "geometry/topology.h"
+
+#include <catch2/catch.hpp>
+
+using dg::Vec3;
+
+namespace {
+
+struct Analysis {
+  dg::PreparedModel prepared;
+  dg::SymmetryResult symmetries;
+  std::vector<dg::GridRule> grids;
+};
+
+Analysis analyze_asset(const std::string& name, const nlohmann::json& params) {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset(name, params).mesh;
+  Analysis a{dg::prepare_model(std::move(model)), {}, {}};
+  a.symmetries = dg::detect_symmetries(a.prepared);
+  a.grids = dg::find_grids(a.prepared, a.symmetries);
+  return a;
+}
+
+// The direction of `grid` whose translation is +-t, or null.
+const dg::GridDirection* direction_along(const dg::GridRule& grid, const Vec3& t) {
+  for (const auto& d : grid.directions)
+    if ((d.translation - t).norm() < 1e-6 || (d.translation + t).norm() < 1e-6) return &d;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("fence(n): a 1-grid along the post pitch whose count is the number of inner posts", "[grammar][grid]") {
+  for (int n : {4, 9}) {
+    const Analysis a = analyze_asset("fence", {{"n", n}});
+    REQUIRE(a.grids.size() == 1);
+    REQUIRE(a.grids[0].directions.size() == 1);
+    const dg::GridDirection* along = direction_along(a.grids[0], Vec3(2.0, 0, 0));
+    REQUIRE(along != nullptr);
+    CHECK(along->count == n);  // ground truth: count = inner posts (assets/README.md)
+  }
+}
+
+TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the generator's counts", "[grammar][grid]") {
+  const Analysis a = analyze_asset("facade", {{"columns", 3}, {"rows", 4}});
+  REQUIRE(a.grids.size() == 1);
+  REQUIRE(a.grids[0].directions.size() == 2);
+  const dg::GridDirection* columns = direction_along(a.grids[0], Vec3(3.0, 0, 0));
+  const dg::GridDirection* rows = direction_along(a.grids[0], Vec3(0, 0, 3.0));
+  REQUIRE(columns != nullptr);
+  REQUIRE(rows != nullptr);
+  CHECK(columns->count == 3);
+  CHECK(rows->count == 4);
+
+  // Nine piece classes: corners once, borders along one direction, the interior in both.
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(a.prepared.model.mesh, a.grids[0], a.prepared.surface.eps());
+  CHECK(pieces.size() == 9);
+  double area = 0.0;
+  for (const auto& piece : pieces) area += piece.mesh.area();
+  // The pieces hold one unit per repeated direction: corners + borders + one interior cell.
+  CHECK(area < a.prepared.model.mesh.area());
+}
+
+TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][grid]") {
+  const Analysis a = analyze_asset("gear", {{"teeth", 12}});
+  CHECK(a.grids.empty());
+}

@@ -1,0 +1,117 @@
+#include "synthesis/grid_resize.h"
+
+#include "assets/generator/asset.h"
+#include "geometry/errors.h"
+#include "geometry/topology.h"
+#include "grammar/grammar_file.h"
+#include "support/mesh_distance.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using dg::Vec3;
+
+namespace {
+
+struct Grammar {
+  double eps = 0.0;
+  dg::GridRule grid;
+  std::vector<dg::GridPiece> pieces;
+};
+
+Grammar grammar_of(const std::string& name, const nlohmann::json& params) {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset(name, params).mesh;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(grids.size() == 1);
+  Grammar g{prepared.surface.eps(), grids[0], dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps())};
+  return g;
+}
+
+std::vector<int> counts_for(const dg::GridRule& grid, const std::vector<std::pair<Vec3, int>>& wanted) {
+  std::vector<int> counts;
+  for (const auto& d : grid.directions)
+    for (const auto& [t, n] : wanted)
+      if ((d.translation - t).norm() < 1e-6 || (d.translation + t).norm() < 1e-6) counts.push_back(n);
+  REQUIRE(counts.size() == grid.directions.size());
+  return counts;
+}
+
+void check_same_shape(const dg::TriangleMesh& result, const dg::TriangleMesh& expected, double eps) {
+  CHECK(dg::is_closed_and_oriented(result));
+  CHECK(dg::test::hausdorff_distance(result, expected) < eps);
+  CHECK(result.area() == Approx(expected.area()).epsilon(1e-3));
+}
+
+}  // namespace
+
+TEST_CASE("resize fence(4) by five units gives the generator's fence(9)", "[synthesis][grid]") {
+  const Grammar g = grammar_of("fence", {{"n", 4}});
+  const auto counts = counts_for(g.grid, {{Vec3(2, 0, 0), 9}});
+  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, 1e-6 * g.eps);
+  check_same_shape(resized, dg::assets::make_asset("fence", {{"n", 9}}).mesh, g.eps);
+  // The exemplar's own counts reproduce it.
+  const auto own = counts_for(g.grid, {{Vec3(2, 0, 0), 4}});
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, 1e-6 * g.eps), dg::assets::make_asset("fence", {{"n", 4}}).mesh, g.eps);
+}
+
+TEST_CASE("resize facade(3 x 4) to 5 x 7 gives the generator's facade(5, 7)", "[synthesis][grid]") {
+  const Grammar g = grammar_of("facade", {{"columns", 3}, {"rows", 4}});
+  const auto counts = counts_for(g.grid, {{Vec3(3, 0, 0), 5}, {Vec3(0, 0, 3), 7}});
+  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, 1e-6 * g.eps);
+  check_same_shape(resized, dg::assets::make_asset("facade", {{"columns", 5}, {"rows", 7}}).mesh, g.eps);
+}
+
+TEST_CASE("resize rejects counts out of range and a wrong number of counts", "[synthesis][grid]") {
+  const Grammar g = grammar_of("fence", {{"n", 4}});
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {-1}, 1e-9), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {g.grid.max_count + 1}, 1e-9), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {3, 3}, 1e-9), dg::InputError);
+}
+
+TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") {
+  const Grammar g = grammar_of("fence", {{"n", 4}});
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-grammar-test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  dg::ShapeGrammar grammar;
+  grammar.source_name = "fence_4.obj";
+  grammar.source_hash = "0";
+  grammar.r = 4 * g.eps;
+  grammar.eps = g.eps;
+  grammar.exemplar = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
+  grammar.grids.push_back({g.grid, g.pieces});
+  const auto path = folder / "fence.grammar.json";
+  dg::write_grammar(path, grammar);
+  const dg::ShapeGrammar read = dg::read_grammar(path);
+  REQUIRE(read.grids.size() == 1);
+  CHECK(read.grids[0].rule.directions[0].count == 4);
+  CHECK(read.grids[0].pieces.size() == g.pieces.size());
+  const dg::TriangleMesh resized = dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {9}, 1e-6 * g.eps);
+  CHECK(dg::is_closed_and_oriented(resized));
+
+  // Truncated file, wrong version, missing sidecar: InputError naming the file.
+  auto write_text = [](const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; };
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  write_text(folder / "truncated.grammar.json", text.substr(0, text.size() / 2));
+  std::string wrong_version = text;
+  wrong_version.replace(wrong_version.find("\"version\": 1"), 12, "\"version\": 99");
+  write_text(folder / "version.grammar.json", wrong_version);
+  for (const char* bad : {"truncated.grammar.json", "version.grammar.json"}) {
+    try {
+      dg::read_grammar(folder / bad);
+      FAIL("no error for " << bad);
+    } catch (const dg::InputError& e) {
+      CHECK(std::string(e.what()).find(bad) != std::string::npos);
+    }
+  }
+  std::filesystem::remove(folder / "fence.grammar.pieces" / "exemplar.ply");
+  CHECK_THROWS_AS(dg::read_grammar(path), dg::InputError);
+  std::filesystem::remove_all(folder);
+}

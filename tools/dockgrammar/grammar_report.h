@@ -1,0 +1,37 @@
+#pragma once
+// What `analyze` tells the user: text summary, JSON summary, Markdown report and pictures.
+
+#include "geometry/prepared_model.h"
+#include "grammar/grammar_file.h"
+#include "symmetry/symmetry_detection.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace dg::cli {
+
+struct AnalysisReport {
+  const PreparedModel& prepared;
+  const SymmetryResult& symmetries;
+  const ShapeGrammar& grammar;
+  double grid_seconds = 0.0;
+  std::filesystem::path grammar_path;
+};
+
+/// Short readable summary for stdout.
+std::string analysis_text(const AnalysisReport& report);
+
+/// {r, eps, symmetries, families, docking_sites, dockers, operations, nonterminals, productions,
+/// grids: [{name, dims, counts, transforms, count_range, pieces}], grammar_file, timings_s, missing}.
+nlohmann::json analysis_json(const AnalysisReport& report);
+
+/// NAME.report.md: cleaning, symmetries, grids with counts and pieces, timings, what is missing.
+void write_analysis_report(const std::filesystem::path& path, const AnalysisReport& report);
+
+/// NAME.<grid>.png and NAME.<grid>.ply: the model coloured by grid piece class (corners, borders,
+/// interior; repeated units in alternating shades), for every grid.
+void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report);
+
+}  // namespace dg::cli

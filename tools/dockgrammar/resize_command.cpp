@@ -1,0 +1,75 @@
+// `dockgrammar resize GRAMMAR --grid NAME=N[xM...] -o OUT`: a resized copy of the exemplar.
+
+#include "tools/dockgrammar/commands.h"
+
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
+#include "grammar/grammar_file.h"
+#include "synthesis/grid_resize.h"
+
+#include <fmt/core.h>
+
+#include <charconv>
+#include <map>
+#include <memory>
+
+namespace dg::cli {
+namespace {
+
+// "facade=5x7" -> {"facade", {5, 7}}.
+std::pair<std::string, std::vector<int>> parse_grid_counts(const std::string& text) {
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
+    throw InputError("--grid " + text + ": expected NAME=N or NAME=NxM");
+  std::vector<int> counts;
+  std::size_t start = equals + 1;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('x', start), text.size());
+    int value = 0;
+    const auto [ptr, ec] = std::from_chars(text.data() + start, text.data() + end, value);
+    if (ec != std::errc() || ptr != text.data() + end) throw InputError("--grid " + text + ": counts must be whole numbers");
+    counts.push_back(value);
+    start = end + 1;
+  }
+  return {text.substr(0, equals), counts};
+}
+
+}  // namespace
+
+void add_resize_command(CLI::App& app) {
+  struct Options {
+    std::string grammar;
+    std::vector<std::string> grids;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
+  command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
+  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction), repeatable")->required();
+  command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb")->required();
+  command->callback([options] {
+    const ShapeGrammar grammar = read_grammar(options->grammar);
+    std::map<std::string, std::vector<int>> requested;
+    for (const std::string& text : options->grids) {
+      auto [name, counts] = parse_grid_counts(text);
+      requested[name] = counts;
+    }
+    for (const auto& [name, counts] : requested) {
+      bool known = false;
+      for (const GridWithPieces& grid : grammar.grids) known = known || grid.rule.name == name;
+      if (!known) {
+        std::string names;
+        for (const GridWithPieces& grid : grammar.grids) names += (names.empty() ? "" : ", ") + grid.rule.name;
+        throw InputError(fmt::format("{}: no grid named '{}' (grids: {})", options->grammar, name, names.empty() ? "none" : names));
+      }
+    }
+    if (grammar.grids.size() > 1)
+      throw InputError(options->grammar + ": resizing grammars with several grids is not supported yet");
+    const GridWithPieces& grid = grammar.grids.front();
+    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name), 1e-6 * grammar.eps);
+    write_mesh(options->output, result);
+    fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
+  });
+}
+
+}  // namespace dg::cli
