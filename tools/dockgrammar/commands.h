@@ -11,5 +11,6 @@ void add_analyze_command(CLI::App& app);
 void add_symmetry_command(CLI::App& app);
 void add_resize_command(CLI::App& app);
 void add_lsystem_command(CLI::App& app);
+void add_verify_command(CLI::App& app);
 
 }  // namespace dg::cli

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   dg::cli::add_symmetry_command(app);
   dg::cli::add_resize_command(app);
   dg::cli::add_lsystem_command(app);
+  dg::cli::add_verify_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

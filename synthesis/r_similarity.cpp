@@ -1,0 +1,360 @@
+#include "synthesis/r_similarity.h"
+
+#include "geometry/errors.h"
+#include "symmetry/candidates.h"
+#include "synthesis/r_similarity_index.h"
+#include "synthesis/r_similarity_match.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <random>
+
+namespace dg {
+namespace {
+
+// A point with an orthonormal frame (tangent, normal, binormal) and what it may pair with.
+struct Anchor {
+  Vec3 position;
+  Mat3 frame;  // columns: tangent, normal, binormal
+  FeatureDescriptor descriptor;
+};
+
+Mat3 frame_of(const Vec3& tangent, const Vec3& normal, const Vec3& binormal) {
+  Mat3 frame;
+  frame << tangent, normal, binormal;
+  return frame;
+}
+
+std::vector<Anchor> keypoint_anchors(const FeatureLines& lines) {
+  std::vector<Anchor> anchors;
+  for (const Keypoint& k : feature_keypoints(lines))
+    anchors.push_back({k.position, frame_of(k.tangent, k.normal, k.binormal), k.descriptor});
+  return anchors;
+}
+
+// Feature samples in both tangent directions.
+std::vector<Anchor> sample_anchors(const FeatureLines& lines) {
+  std::vector<Anchor> anchors;
+  for (const FeatureSample& s : lines.samples) {
+    anchors.push_back({s.position, frame_of(s.tangent, s.normal, s.binormal), s.descriptor});
+    anchors.push_back({s.position, frame_of(-s.tangent, s.normal, -s.binormal), s.descriptor});
+  }
+  return anchors;
+}
+
+// splitmix64, to order anchors of equal dihedral pseudo-randomly (so a search budget is not
+// spent on neighbouring samples of one line).
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// Whole degrees of dihedral: the sort key of exemplar anchors.
+double dihedral_key(const Anchor& a) { return std::round(a.descriptor.dihedral_degrees); }
+
+// Sorts by whole degrees of dihedral, then in a fixed pseudo-random order.
+void sort_by_dihedral(std::vector<Anchor>& anchors) {
+  std::vector<std::pair<std::pair<double, std::uint64_t>, std::size_t>> keys;
+  for (std::size_t i = 0; i < anchors.size(); ++i) keys.push_back({{dihedral_key(anchors[i]), mix(i)}, i});
+  std::sort(keys.begin(), keys.end());
+  std::vector<Anchor> sorted;
+  sorted.reserve(anchors.size());
+  for (const auto& key : keys) sorted.push_back(anchors[key.second]);
+  anchors = std::move(sorted);
+}
+
+// The motion taking candidate anchor c onto exemplar anchor e, frame to frame.
+RigidTransform align(const Anchor& c, const Anchor& e) {
+  RigidTransform t;
+  t.rotation = e.frame * c.frame.transpose();
+  t.translation = e.position - t.rotation * c.position;
+  return t;
+}
+
+struct Motion {
+  RigidTransform transform;
+  std::size_t hits = 0;
+};
+
+bool same_motion(const RigidTransform& a, const RigidTransform& b, double tolerance) {
+  return (a.rotation - b.rotation).norm() < 1e-9 && (a.translation - b.translation).norm() < tolerance;
+}
+
+struct SampleOutcome {
+  bool similar = false;
+  bool searched = false;
+  std::optional<RigidTransform> found;  // a motion from the search (step 2 or 3)
+  long cached = -1;                     // index of the reused motion that matched
+};
+
+class Matcher {
+ public:
+  Matcher(const PreparedModel& exemplar, const PreparedModel& candidate, const RSimilarityOptions& options)
+      : options_(options),
+        r_(exemplar.surface.r()),
+        exemplar_index_(exemplar.model.mesh, options.spacing_r * r_, r_, exemplar.surface.eps(), options.seed),
+        candidate_index_(candidate.model.mesh, options.spacing_r * r_, r_, exemplar.surface.eps(), options.seed + 1),
+        candidate_keypoints_(keypoint_anchors(candidate.feature_lines)),
+        candidate_samples_(sample_anchors(candidate.feature_lines)),
+        exemplar_keypoints_(keypoint_anchors(exemplar.feature_lines)),
+        exemplar_samples_(sample_anchors(exemplar.feature_lines)) {
+    const double eps = exemplar.surface.eps();
+    tolerances_.r = r_;
+    tolerances_.tolerance = std::min(options.tolerance_eps * exemplar.surface.eps(), eps);
+    tolerances_.min_cos = std::cos(options.normal_tolerance_degrees * std::numbers::pi / 180.0);
+    tolerances_.icp_cutoff = eps;
+    tolerances_.icp_iterations = options.icp_iterations;
+    probe_cutoff_ = std::min(2.0 * tolerances_.tolerance, eps);
+    sort_by_dihedral(exemplar_keypoints_);
+    sort_by_dihedral(exemplar_samples_);
+    find_flat_disk(exemplar.model.mesh);
+  }
+
+  double tolerance() const { return tolerances_.tolerance; }
+  const SurfaceIndex& exemplar_index() const { return exemplar_index_; }
+  const SurfaceIndex& candidate_index() const { return candidate_index_; }
+
+  // Tries the reused motions (in the given order), then, if `search`, steps 2 and 3.
+  SampleOutcome match(const SurfacePoint& y, const std::vector<Motion>& motions, const std::vector<std::size_t>& order,
+                      bool search) const {
+    SampleOutcome outcome;
+    std::vector<std::uint32_t> ball, scratch;
+    candidate_index_.gather(y.position, r_, ball);
+    const std::vector<std::uint32_t> probes = spread_probes(y.position, ball);
+    for (std::size_t m : order) {
+      const RigidTransform& t = motions[m].transform;
+      if (!probes_touch(probes, t, tolerances_.tolerance, tolerances_.min_cos)) continue;
+      if (neighbourhoods_match(candidate_index_, exemplar_index_, y.position, ball, t, tolerances_, scratch)) {
+        outcome.similar = true;
+        outcome.cached = static_cast<long>(m);
+        return outcome;
+      }
+    }
+    if (!search) return outcome;
+    outcome.searched = true;
+    // First only proposals that already put the whole ball within the tolerance (exact frames:
+    // corners, straight edges, flat disks), then looser ones (curved lines) with a smaller budget.
+    std::size_t attempts = 0, budget = options_.max_alignments;
+    double cutoff = tolerances_.tolerance;
+    auto attempt = [&](const RigidTransform& proposal) {
+      if (attempts >= budget) return false;
+      if (!probes_touch(probes, proposal, cutoff, tolerances_.min_cos) ||
+          !probes_touch(ball, proposal, cutoff, tolerances_.min_cos))
+        return false;
+      ++attempts;
+      const RigidTransform refined =
+          refine_alignment(candidate_index_, exemplar_index_, y.position, ball, proposal, tolerances_);
+      if (!neighbourhoods_match(candidate_index_, exemplar_index_, y.position, ball, refined, tolerances_, scratch))
+        return false;
+      outcome.similar = true;
+      outcome.found = refined;
+      return true;
+    };
+    if (flat_disk_ && is_flat(y, ball)) {
+      RigidTransform t;
+      t.rotation = Eigen::Quaterniond::FromTwoVectors(y.normal, flat_disk_->normal).toRotationMatrix();
+      t.translation = flat_disk_->position - t.rotation * y.position;
+      if (attempt(t)) return outcome;
+    }
+    for (int round = 0; round < 2; ++round) {
+      if (try_anchors(y.position, candidate_keypoints_, exemplar_keypoints_, attempt)) return outcome;
+      if (try_anchors(y.position, candidate_samples_, exemplar_samples_, attempt)) return outcome;
+      attempts = 0;
+      budget = options_.max_loose_alignments;
+      cutoff = probe_cutoff_;
+    }
+    return outcome;
+  }
+
+ private:
+  // Up to 8 samples of the ball, spread out by farthest-point selection from y.
+  std::vector<std::uint32_t> spread_probes(const Vec3& y, const std::vector<std::uint32_t>& ball) const {
+    std::vector<std::uint32_t> probes;
+    std::vector<double> distance(ball.size());
+    for (std::size_t i = 0; i < ball.size(); ++i) distance[i] = (candidate_index_.samples()[ball[i]].position - y).norm();
+    while (probes.size() < 8 && !ball.empty()) {
+      const auto farthest = static_cast<std::size_t>(std::max_element(distance.begin(), distance.end()) - distance.begin());
+      if (distance[farthest] <= 0.0) break;
+      probes.push_back(ball[farthest]);
+      const Vec3 chosen = candidate_index_.samples()[ball[farthest]].position;
+      for (std::size_t i = 0; i < ball.size(); ++i)
+        distance[i] = std::min(distance[i], (candidate_index_.samples()[ball[i]].position - chosen).norm());
+    }
+    return probes;
+  }
+
+  bool probes_touch(const std::vector<std::uint32_t>& probes, const RigidTransform& t, double cutoff, double min_cos) const {
+    for (std::uint32_t i : probes) {
+      const SurfacePoint& p = candidate_index_.samples()[i];
+      if (!exemplar_index_.touches(t.apply(p.position), t.apply_direction(p.normal), cutoff, min_cos)) return false;
+    }
+    return true;
+  }
+
+  template <class Attempt>
+  bool try_anchors(const Vec3& y, const std::vector<Anchor>& near, const std::vector<Anchor>& far,
+                   Attempt& attempt) const {
+    std::vector<std::pair<double, std::size_t>> nearest;
+    for (std::size_t i = 0; i < near.size(); ++i) {
+      const double d = (near[i].position - y).norm();
+      if (d <= r_) nearest.emplace_back(d, i);
+    }
+    std::sort(nearest.begin(), nearest.end());
+    // Both tangent directions of one feature sample count as one anchor.
+    std::size_t used = 0;
+    Vec3 last = Vec3::Constant(std::numeric_limits<double>::infinity());
+    for (const auto& [d, i] : nearest) {
+      const Anchor& c = near[i];
+      if (c.position != last && ++used > options_.anchors) break;
+      last = c.position;
+      const double tolerance = options_.dihedral_tolerance_degrees;
+      const double lo = std::round(c.descriptor.dihedral_degrees - tolerance);
+      auto e = std::lower_bound(far.begin(), far.end(), lo,
+                                [](const Anchor& a, double value) { return dihedral_key(a) < value; });
+      for (; e != far.end() && dihedral_key(*e) <= std::round(c.descriptor.dihedral_degrees + tolerance); ++e)
+        if (e->descriptor.boundary == c.descriptor.boundary &&
+            std::abs(e->descriptor.dihedral_degrees - c.descriptor.dihedral_degrees) <= tolerance &&
+            attempt(align(c, *e)))
+          return true;
+    }
+    return false;
+  }
+
+  bool is_flat(const SurfacePoint& y, const std::vector<std::uint32_t>& ball) const {
+    for (std::uint32_t i : ball) {
+      const SurfacePoint& p = candidate_index_.samples()[i];
+      if (std::abs((p.position - y.position).dot(y.normal)) > tolerances_.tolerance ||
+          p.normal.dot(y.normal) < tolerances_.min_cos)
+        return false;
+    }
+    return true;
+  }
+
+  // A point of the exemplar whose r-ball is one full flat disk (tried at the centroids of the
+  // largest triangles), for step 3.
+  void find_flat_disk(const TriangleMesh& mesh) {
+    std::vector<std::pair<double, std::uint32_t>> by_area;
+    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) by_area.emplace_back(-mesh.area_vector(t).norm(), t);
+    std::sort(by_area.begin(), by_area.end());
+    const double h = options_.spacing_r * r_;
+    const double full_count = std::numbers::pi * r_ * r_ / (h * h);
+    std::vector<std::uint32_t> ball;
+    for (std::size_t k = 0; k < std::min<std::size_t>(64, by_area.size()); ++k) {
+      const auto [a, b, c] = mesh.corners(by_area[k].second);
+      const SurfacePoint x{(a + b + c) / 3.0, mesh.area_vector(by_area[k].second).normalized()};
+      exemplar_index_.gather(x.position, r_, ball);
+      if (static_cast<double>(ball.size()) < 0.8 * full_count) continue;
+      const bool flat = std::all_of(ball.begin(), ball.end(), [&](std::uint32_t i) {
+        const SurfacePoint& q = exemplar_index_.samples()[i];
+        return std::abs((q.position - x.position).dot(x.normal)) <= tolerances_.tolerance &&
+               q.normal.dot(x.normal) >= tolerances_.min_cos;
+      });
+      if (flat) {
+        flat_disk_ = x;
+        return;
+      }
+    }
+  }
+
+  RSimilarityOptions options_;
+  double r_;
+  SurfaceIndex exemplar_index_, candidate_index_;
+  std::vector<Anchor> candidate_keypoints_, candidate_samples_, exemplar_keypoints_, exemplar_samples_;
+  MatchTolerances tolerances_;
+  double probe_cutoff_ = 0.0;
+  std::optional<SurfacePoint> flat_disk_;
+};
+
+// Area-uniform test points on the mesh, from one seeded generator.
+std::vector<SurfacePoint> test_points(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
+  std::vector<double> cumulative;
+  cumulative.reserve(mesh.triangles.size());
+  double total = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) cumulative.push_back(total += mesh.area_vector(t).norm());
+  std::vector<SurfacePoint> points;
+  if (total <= 0.0) return points;
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double pick = uniform(random) * total;
+    const auto t = static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
+    const std::size_t triangle = std::min(t, mesh.triangles.size() - 1);
+    const double s = std::sqrt(uniform(random)), u = uniform(random);
+    const auto [a, b, c] = mesh.corners(triangle);
+    points.push_back({(1.0 - s) * a + s * (1.0 - u) * b + s * u * c, mesh.area_vector(triangle).normalized()});
+  }
+  return points;
+}
+
+// Motion indices by hits (descending), then insertion order.
+std::vector<std::size_t> usage_order(const std::vector<Motion>& motions) {
+  std::vector<std::size_t> order(motions.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return motions[a].hits > motions[b].hits; });
+  return order;
+}
+
+}  // namespace
+
+RSimilarityResult estimate_r_similarity(const PreparedModel& exemplar, const PreparedModel& candidate,
+                                        const RSimilarityOptions& options, const ProgressCallback& progress) {
+  if (exemplar.model.is_point_cloud() || candidate.model.is_point_cloud())
+    throw InputError("r-similarity needs triangle meshes, not point clouds");
+  if (options.samples == 0 || options.batch_size == 0 || !(options.spacing_r > 0.0) || !(options.tolerance_eps > 0.0))
+    throw InputError("r-similarity options: samples, batch size, spacing and tolerance must be positive");
+  report_progress(progress, "r-similarity", 0.0);
+  const Matcher matcher(exemplar, candidate, options);
+  RSimilarityResult result;
+  result.r = exemplar.surface.r();
+  result.tolerance = matcher.tolerance();
+  result.dense_samples_exemplar = matcher.exemplar_index().samples().size();
+  result.dense_samples_candidate = matcher.candidate_index().samples().size();
+
+  const std::vector<SurfacePoint> points = test_points(candidate.model.mesh, options.samples, options.seed);
+  result.samples = points.size();
+  std::vector<Motion> motions{{RigidTransform{}, 0}};
+  std::vector<SampleOutcome> outcomes(points.size());
+  for (std::size_t begin = 0; begin < points.size(); begin += options.batch_size) {
+    const std::size_t end = std::min(points.size(), begin + options.batch_size);
+    const std::vector<std::size_t> order = usage_order(motions);
+    tbb::parallel_for(begin, end, [&](std::size_t i) { outcomes[i] = matcher.match(points[i], motions, order, true); });
+    for (std::size_t i = begin; i < end; ++i) {
+      const SampleOutcome& outcome = outcomes[i];
+      if (outcome.cached >= 0) ++motions[static_cast<std::size_t>(outcome.cached)].hits;
+      if (!outcome.found || motions.size() >= options.max_motions) continue;
+      const bool known = std::any_of(motions.begin(), motions.end(), [&](const Motion& m) {
+        return same_motion(m.transform, *outcome.found, 0.01 * result.tolerance);
+      });
+      if (!known) motions.push_back({*outcome.found, 1});
+    }
+    report_progress(progress, "r-similarity", 0.9 * static_cast<double>(end) / static_cast<double>(points.size()));
+  }
+  // Points that failed before a motion that fits them was found get every motion once more.
+  const std::vector<std::size_t> order = usage_order(motions);
+  tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+    if (!outcomes[i].similar) {
+      const bool searched = outcomes[i].searched;
+      outcomes[i] = matcher.match(points[i], motions, order, false);
+      outcomes[i].searched = searched;
+    }
+  });
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (outcomes[i].similar)
+      ++result.similar;
+    else
+      result.dissimilar_points.push_back(points[i].position);
+    if (outcomes[i].searched) ++result.searched;
+  }
+  result.motions = motions.size();
+  result.fraction = result.samples == 0 ? 1.0 : static_cast<double>(result.similar) / static_cast<double>(result.samples);
+  report_progress(progress, "r-similarity", 1.0);
+  return result;
+}
+
+}  // namespace dg

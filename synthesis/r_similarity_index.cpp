@@ -1,0 +1,186 @@
+#include "synthesis/r_similarity_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace dg {
+namespace {
+
+// splitmix64: a small, well-mixed hash used as a per-triangle random stream.
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+double unit(std::uint64_t& state) {
+  state = mix(state);
+  return static_cast<double>(state >> 11) * 0x1.0p-53;
+}
+
+constexpr std::int64_t kKeyBias = 1 << 20;
+
+}  // namespace
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gather_radius, double max_cutoff,
+                           std::uint64_t seed)
+    : mesh_(mesh), cell_(gather_radius), triangle_cell_(max_cutoff) {
+  triangle_normals_.reserve(mesh.triangles.size());
+  std::vector<SurfacePoint> points;
+  const double inverse_cell_area = 1.0 / (spacing * spacing);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 area_vector = mesh.area_vector(t);
+    const double length = area_vector.norm();
+    const Vec3 normal = length > 0.0 ? Vec3(area_vector / length) : Vec3::UnitZ();
+    triangle_normals_.push_back(normal);
+    std::uint64_t state = mix(seed ^ mix(t));
+    const double expected = 0.5 * length * inverse_cell_area;
+    const auto count = static_cast<std::size_t>(std::floor(expected + unit(state)));
+    const auto [a, b, c] = mesh.corners(t);
+    for (std::size_t i = 0; i < count; ++i) {
+      const double s = std::sqrt(unit(state)), u = unit(state);
+      points.push_back({(1.0 - s) * a + s * (1.0 - u) * b + s * u * c, normal});
+    }
+  }
+  std::vector<Key> keys(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) keys[i] = key(points[i].position, cell_);
+  std::vector<std::uint32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return keys[i] < keys[j]; });
+  samples_.reserve(points.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) {
+    const Key k = keys[order[i]];
+    if (i == 0 || keys[order[i - 1]] != k) buckets_[k] = {i, i};
+    buckets_[k].second = i + 1;
+    samples_.push_back(points[order[i]]);
+  }
+  build_triangle_grid();
+}
+
+// Lists each triangle in every cell whose centre lies within cutoff + half the cell diagonal of
+// it, so a query needs only the cell holding q. Cells are visited column by column along the
+// triangle's dominant normal axis, only near its plane.
+void SurfaceIndex::build_triangle_grid() {
+  const double g = triangle_cell_;
+  const double reach = g + 0.5 * std::sqrt(3.0) * g;
+  std::vector<std::pair<Key, std::uint32_t>> items;
+  for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh_.corners(t);
+    const Vec3 n = triangle_normals_[t];
+    int w = 0;
+    n.cwiseAbs().maxCoeff(&w);
+    const int u = (w + 1) % 3, v = (w + 2) % 3;
+    const Vec3 lo = a.cwiseMin(b).cwiseMin(c).array() - reach, hi = a.cwiseMax(b).cwiseMax(c).array() + reach;
+    auto index = [g](double x) { return static_cast<std::int64_t>(std::floor(x / g)); };
+    for (std::int64_t i = index(lo[u]); i <= index(hi[u]); ++i)
+      for (std::int64_t j = index(lo[v]); j <= index(hi[v]); ++j) {
+        // Range of the plane's w over the column, widened by the reach along the normal.
+        double w_lo = hi[w], w_hi = lo[w];
+        for (int corner = 0; corner < 4; ++corner) {
+          const double cu = static_cast<double>(i + (corner & 1)) * g, cv = static_cast<double>(j + (corner >> 1)) * g;
+          const double plane_w = a[w] - (n[u] * (cu - a[u]) + n[v] * (cv - a[v])) / n[w];
+          w_lo = std::min(w_lo, plane_w);
+          w_hi = std::max(w_hi, plane_w);
+        }
+        const double slack = reach / std::abs(n[w]);
+        for (std::int64_t k = index(std::max(lo[w], w_lo - slack)); k <= index(std::min(hi[w], w_hi + slack)); ++k) {
+          Vec3 centre;
+          centre[u] = (static_cast<double>(i) + 0.5) * g;
+          centre[v] = (static_cast<double>(j) + 0.5) * g;
+          centre[w] = (static_cast<double>(k) + 0.5) * g;
+          if ((closest_point_on_triangle(centre, a, b, c) - centre).norm() <= reach) items.emplace_back(key(centre, g), t);
+        }
+      }
+  }
+  std::sort(items.begin(), items.end());
+  cell_triangles_.reserve(items.size());
+  for (std::uint32_t i = 0; i < items.size(); ++i) {
+    if (i == 0 || items[i - 1].first != items[i].first) triangle_buckets_[items[i].first] = {i, i};
+    triangle_buckets_[items[i].first].second = i + 1;
+    cell_triangles_.push_back(items[i].second);
+  }
+}
+
+SurfaceIndex::Key SurfaceIndex::key(const Vec3& p, double cell) {
+  Key k = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto i = static_cast<std::int64_t>(std::floor(p[axis] / cell)) + kKeyBias;
+    k = (k << 21) | (static_cast<Key>(std::clamp<std::int64_t>(i, 0, (1 << 21) - 1)));
+  }
+  return k;
+}
+
+void SurfaceIndex::gather(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const double radius2 = radius * radius;
+  const Vec3 lo = (p.array() - radius) / cell_, hi = (p.array() + radius) / cell_;
+  for (auto i = static_cast<std::int64_t>(std::floor(lo.x())); i <= static_cast<std::int64_t>(std::floor(hi.x())); ++i)
+    for (auto j = static_cast<std::int64_t>(std::floor(lo.y())); j <= static_cast<std::int64_t>(std::floor(hi.y())); ++j)
+      for (auto k = static_cast<std::int64_t>(std::floor(lo.z())); k <= static_cast<std::int64_t>(std::floor(hi.z())); ++k) {
+        const Vec3 corner = (Vec3(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)).array() + 0.5) * cell_;
+        const auto found = buckets_.find(key(corner, cell_));
+        if (found == buckets_.end()) continue;
+        for (std::uint32_t s = found->second.first; s < found->second.second; ++s)
+          if ((samples_[s].position - p).squaredNorm() <= radius2) out.push_back(s);
+      }
+  std::sort(out.begin(), out.end());
+}
+
+template <class Visit>
+bool SurfaceIndex::visit_triangles(const Vec3& q, Visit&& visit) const {
+  const auto found = triangle_buckets_.find(key(q, triangle_cell_));
+  if (found == triangle_buckets_.end()) return false;
+  for (std::uint32_t i = found->second.first; i < found->second.second; ++i)
+    if (visit(cell_triangles_[i])) return true;
+  return false;
+}
+
+bool SurfaceIndex::touches(const Vec3& q, const Vec3& normal, double tolerance, double min_cos) const {
+  const double tolerance2 = tolerance * tolerance;
+  return visit_triangles(q, [&](std::uint32_t t) {
+    if (triangle_normals_[t].dot(normal) < min_cos) return false;
+    const auto [a, b, c] = mesh_.corners(t);
+    return (closest_point_on_triangle(q, a, b, c) - q).squaredNorm() <= tolerance2;
+  });
+}
+
+std::optional<SurfacePoint> SurfaceIndex::closest(const Vec3& q, const Vec3& normal, double cutoff, double min_cos) const {
+  std::optional<SurfacePoint> best;
+  double best2 = cutoff * cutoff;
+  visit_triangles(q, [&](std::uint32_t t) {
+    if (triangle_normals_[t].dot(normal) < min_cos) return false;
+    const auto [a, b, c] = mesh_.corners(t);
+    const Vec3 point = closest_point_on_triangle(q, a, b, c);
+    const double d2 = (point - q).squaredNorm();
+    if (d2 <= best2) {
+      best2 = d2;
+      best = SurfacePoint{point, triangle_normals_[t]};
+    }
+    return false;
+  });
+  return best;
+}
+
+}  // namespace dg
