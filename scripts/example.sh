@@ -5,4 +5,5 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 bash scripts/install-deps.sh
 bash scripts/build.sh build -DCMAKE_BUILD_TYPE=Release -DDOCKGRAMMAR_TESTS=OFF
-./build/tools/dockgrammar analyze assets/models/facade_3x4.obj
+./build/tools/dockgrammar analyze assets/models/facade_3x4.obj -o out/example
+echo "grammar, report and pictures are in out/example/"

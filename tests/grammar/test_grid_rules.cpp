@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 using dg::Vec3;
 
 namespace {
@@ -67,4 +69,21 @@ TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the g
 TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][grid]") {
   const Analysis a = analyze_asset("gear", {{"teeth", 12}});
   CHECK(a.grids.empty());
+}
+
+TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster pitch", "[grammar][grid][corpus]") {
+  const std::filesystem::path railing =
+      std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" / "arch-sh3d-railing" / "railing.obj";
+  if (!std::filesystem::exists(railing)) {
+    WARN("corpus not found at " << railing.string() << ": corpus check skipped");
+    return;
+  }
+  const dg::PreparedModel prepared = dg::prepare_model(railing);
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(grids.size() == 1);
+  const dg::GridDirection* balusters = direction_along(grids[0], Vec3(0.118, 0, 0));
+  REQUIRE(balusters != nullptr);
+  // 8 balusters: 7 units between cut planes, the eighth stays with the end post (docs/grammar-file.md).
+  CHECK(balusters->count == 7);
 }
