@@ -10,6 +10,7 @@ void add_info_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_symmetry_command(CLI::App& app);
 void add_resize_command(CLI::App& app);
+void add_generate_command(CLI::App& app);
 void add_lsystem_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   dg::cli::add_analyze_command(app);
   dg::cli::add_symmetry_command(app);
   dg::cli::add_resize_command(app);
+  dg::cli::add_generate_command(app);
   dg::cli::add_lsystem_command(app);
   dg::cli::add_verify_command(app);
   try {

@@ -1,0 +1,43 @@
+#include "synthesis/variants.h"
+
+#include "geometry/errors.h"
+#include "grammar/random.h"
+#include "synthesis/grid_resize.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dg {
+
+std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (index + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options) {
+  if (grammar.grids.empty()) throw InputError("the grammar has no rules to vary (no grid was found in the exemplar)");
+  if (grammar.grids.size() > 1) throw InputError("variants of grammars with several grids are not supported yet");
+  if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
+  VariantPlan plan;
+  plan.seed = variant_seed(seed, index);
+  Random random(plan.seed);
+  for (const GridWithPieces& grid : grammar.grids) {
+    std::vector<int> counts;
+    for (const GridDirection& d : grid.rule.directions) {
+      const int lo = std::max({1, grid.rule.min_count, static_cast<int>(std::ceil(d.count / options.range_factor))});
+      const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
+      counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
+    }
+    plan.grid_counts.push_back(std::move(counts));
+  }
+  return plan;
+}
+
+TriangleMesh build_variant(const ShapeGrammar& grammar, const VariantPlan& plan) {
+  const GridWithPieces& grid = grammar.grids.front();
+  return resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), 1e-6 * grammar.eps);
+}
+
+}  // namespace dg

@@ -1,0 +1,74 @@
+// `dockgrammar generate GRAMMAR --count N [--seed S] -o DIR [--format obj|ply|glb]`.
+
+#include "tools/dockgrammar/commands.h"
+
+#include "geometry/atomic_file.h"
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
+#include "synthesis/variants.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+namespace dg::cli {
+
+void add_generate_command(CLI::App& app) {
+  struct Options {
+    std::string grammar;
+    std::size_t count = 10;
+    std::uint64_t seed = 1;
+    std::uint64_t first = 0;
+    std::string output;
+    std::string format = "obj";
+    double range_factor = 2.0;
+    bool quiet = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "generate", "Write random variants of a grammar (version 1 grammars: random grid counts) plus DIR/manifest.json");
+  command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze")->required();
+  command->add_option("--count", options->count, "Number of variants")->capture_default_str()->check(CLI::Range(1, 1000000));
+  command->add_option("--seed", options->seed, "Seed of the batch; variant i depends only on (grammar, seed, i)")->capture_default_str();
+  command->add_option("--first", options->first, "Index of the first variant (to split a batch across machines)")->capture_default_str();
+  command->add_option("-o,--output", options->output, "Output folder")->required();
+  command->add_option("--format", options->format, "obj, ply or glb")->capture_default_str()->check(CLI::IsMember({"obj", "ply", "glb"}));
+  command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 100.0));
+  command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
+  command->callback([options] {
+    const ShapeGrammar grammar = read_grammar(options->grammar);
+    const std::filesystem::path folder(options->output);
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw InputError(folder.string() + ": cannot create the output folder");
+    VariantOptions variant_options;
+    variant_options.range_factor = options->range_factor;
+    const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
+    nlohmann::json variants = nlohmann::json::array();
+    for (std::size_t n = 0; n < options->count; ++n) {
+      const std::uint64_t index = options->first + n;
+      const VariantPlan plan = plan_variant(grammar, options->seed, index, variant_options);
+      const TriangleMesh mesh = build_variant(grammar, plan);
+      const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
+      write_mesh(folder / file, mesh);
+      nlohmann::json grids = nlohmann::json::object();
+      for (std::size_t g = 0; g < grammar.grids.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
+      variants.push_back({{"index", index}, {"file", file}, {"seed", plan.seed}, {"grids", grids},
+                          {"productions", nlohmann::json::array()}, {"triangles", mesh.triangles.size()}});
+      if (progress) fmt::print(stderr, "\r\033[Kvariant {}/{}", n + 1, options->count);
+    }
+    if (progress) fmt::print(stderr, "\n");
+    const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
+                                     {"count", options->count},     {"variants", variants}};
+    write_file_atomically(folder / "manifest.json", [&](std::ostream& out) { out << manifest.dump(2) << '\n'; }, false);
+    if (!options->quiet) fmt::print(stderr, "wrote {} variants and manifest.json to {}\n", options->count, folder.string());
+  });
+}
+
+}  // namespace dg::cli
