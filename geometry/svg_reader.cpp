@@ -82,7 +82,8 @@ std::vector<double> read_number_list(std::string_view text, const char* what) {
 
 int piece_count(double length, const SvgReadOptions& options) {
   const int n = static_cast<int>(std::ceil(length / std::max(options.max_piece, 1e-9)));
-  return std::clamp(n, 1, std::max(1, options.max_pieces_per_curve));
+  const int most = std::max(1, options.max_pieces_per_curve);
+  return std::clamp(n, std::clamp(options.min_pieces_per_curve, 1, most), most);
 }
 
 void add_cubic(Polyline& out, const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3, const SvgReadOptions& options) {

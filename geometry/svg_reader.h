@@ -31,7 +31,8 @@ struct SvgDrawing {
 
 /// How curves are flattened.
 struct SvgReadOptions {
-  double max_piece = 0.5;       ///< longest straight piece a curve or arc is split into (user units)
+  double max_piece = 0.25;      ///< longest straight piece a curve or arc is split into (user units)
+  int min_pieces_per_curve = 16;   ///< curves keep their shape however small they are drawn
   int max_pieces_per_curve = 256;  ///< upper bound of pieces per curve segment or arc
 };
 

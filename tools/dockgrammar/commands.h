@@ -12,6 +12,7 @@ void add_symmetry_command(CLI::App& app);
 void add_resize_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_lsystem_command(CLI::App& app);
+void add_lsystem_infer_subcommand(CLI::App& lsystem);
 void add_verify_command(CLI::App& app);
 
 }  // namespace dg::cli

@@ -188,6 +188,7 @@ void add_lsystem_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   print_command->add_flag("--json", print_options->json, "print the JSON form (with grammar_length)");
   print_command->callback([print_options] { run_print(*print_options); });
+  add_lsystem_infer_subcommand(*lsystem);
 }
 
 }  // namespace dg::cli

@@ -1,0 +1,92 @@
+// `dockgrammar lsystem infer INPUT.svg`: infer an L-system from a vector drawing (Št'ava et al.
+// 2010), print it and write it.
+
+#include "tools/dockgrammar/commands.h"
+
+#include "geometry/atomic_file.h"
+#include "geometry/errors.h"
+#include "geometry/svg_reader.h"
+#include "grammar/grammar_length.h"
+#include "grammar/inference.h"
+#include "grammar/lsystem_json.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace dg::cli {
+
+namespace {
+
+struct InferOptions {
+  std::string input;
+  std::string output;
+  bool json = false;
+  InferenceOptions inference;
+};
+
+std::string extension_of(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+void run_infer(const InferOptions& options) {
+  if (extension_of(options.input) != ".svg") throw InputError(options.input + ": vector inference reads .svg files");
+  if (!options.output.empty()) {
+    const std::string extension = extension_of(options.output);
+    if (extension != ".ls" && extension != ".json") throw InputError(options.output + ": the output must end in .ls or .json");
+    std::error_code ignored;
+    if (std::filesystem::equivalent(options.input, options.output, ignored))
+      throw InputError(options.output + ": refusing to overwrite the input");
+  }
+  const SvgDrawing drawing = read_svg(options.input);
+  InferredLSystem inferred;
+  try {
+    inferred = infer_lsystem(drawing, options.inference);
+  } catch (const InputError& error) {
+    throw InputError(options.input + ": " + error.what());
+  }
+  nlohmann::ordered_json json = lsystem_to_json(inferred.lsystem);
+  json["grammar_length"] = grammar_length(inferred.lsystem);
+  json["start_svg"] = {inferred.start_svg.x(), inferred.start_svg.y()};
+  json["elements"] = inferred.elements;
+  json["terminals"] = inferred.terminals;
+  json["timings_s"] = {{"instancing", inferred.timings.instancing_s},
+                       {"rules", inferred.timings.rules_s},
+                       {"total", inferred.timings.total_s}};
+  if (!options.output.empty()) {
+    const bool as_json = extension_of(options.output) == ".json";
+    write_file_atomically(options.output, [&](std::ostream& out) { out << (as_json ? json.dump(2) + "\n" : inferred.text); }, false);
+  }
+  if (options.json) fmt::print("{}\n", json.dump(2));
+  else fmt::print("{}", inferred.text);
+}
+
+}  // namespace
+
+void add_lsystem_infer_subcommand(CLI::App& lsystem) {
+  auto options = std::make_shared<InferOptions>();
+  CLI::App* command = lsystem.add_subcommand(
+      "infer",
+      "Infer an L-system from a vector drawing (each SVG element one atomic element; Št'ava et al. 2010).\n"
+      "Example: dockgrammar lsystem infer helix.svg -o helix.ls && dockgrammar lsystem derive helix.ls -o helix.png");
+  command->add_option("INPUT", options->input, "vector drawing (.svg)")->required()->check(CLI::ExistingFile);
+  command->add_option("-o,--output", options->output, "write the L-system here: OUT.ls (text form) or OUT.json");
+  command->add_flag("--json", options->json, "print the JSON form with grammar_length, start_svg and timings_s");
+  ImportanceWeights& w = options->inference.clusters.weights;
+  command->add_option("--w-n", w.w_n, "importance weight of the number of absorbed elements")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--w-h", w.w_h, "importance weight of proximity (merge neighbours first)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--w-phi", w.w_phi, "importance weight of element similarity")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--w-l", w.w_l, "importance weight of sequence length")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--similarity", options->inference.similarity.threshold, "element similarity threshold")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command->callback([options] { run_infer(*options); });
+}
+
+}  // namespace dg::cli
