@@ -46,22 +46,14 @@ std::vector<Anchor> sample_anchors(const FeatureLines& lines) {
   return anchors;
 }
 
-// splitmix64, to order anchors of equal dihedral pseudo-randomly (so a search budget is not
-// spent on neighbouring samples of one line).
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 // Whole degrees of dihedral: the sort key of exemplar anchors.
 double dihedral_key(const Anchor& a) { return std::round(a.descriptor.dihedral_degrees); }
 
-// Sorts by whole degrees of dihedral, then in a fixed pseudo-random order.
+// Sorts by whole degrees of dihedral, then in a fixed pseudo-random order (so a search budget
+// is not spent on neighbouring samples of one line).
 void sort_by_dihedral(std::vector<Anchor>& anchors) {
   std::vector<std::pair<std::pair<double, std::uint64_t>, std::size_t>> keys;
-  for (std::size_t i = 0; i < anchors.size(); ++i) keys.push_back({{dihedral_key(anchors[i]), mix(i)}, i});
+  for (std::size_t i = 0; i < anchors.size(); ++i) keys.push_back({{dihedral_key(anchors[i]), splitmix64(i)}, i});
   std::sort(keys.begin(), keys.end());
   std::vector<Anchor> sorted;
   sorted.reserve(anchors.size());
@@ -95,25 +87,25 @@ struct SampleOutcome {
 
 class Matcher {
  public:
-  Matcher(const PreparedModel& exemplar, const PreparedModel& candidate, const RSimilarityOptions& options)
+  Matcher(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r, const RSimilarityOptions& options)
       : options_(options),
-        r_(exemplar.surface.r()),
-        exemplar_index_(exemplar.model.mesh, options.spacing_r * r_, r_, exemplar.surface.eps(), options.seed),
-        candidate_index_(candidate.model.mesh, options.spacing_r * r_, r_, exemplar.surface.eps(), options.seed + 1),
+        r_(r),
+        exemplar_index_(exemplar.mesh, options.spacing_r * r, r, r / 4.0, options.seed),
+        candidate_index_(candidate.mesh, options.spacing_r * r, r, r / 4.0, options.seed + 1),
         candidate_keypoints_(keypoint_anchors(candidate.feature_lines)),
         candidate_samples_(sample_anchors(candidate.feature_lines)),
         exemplar_keypoints_(keypoint_anchors(exemplar.feature_lines)),
         exemplar_samples_(sample_anchors(exemplar.feature_lines)) {
-    const double eps = exemplar.surface.eps();
+    const double eps = r / 4.0;
     tolerances_.r = r_;
-    tolerances_.tolerance = std::min(options.tolerance_eps * exemplar.surface.eps(), eps);
+    tolerances_.tolerance = std::min(options.tolerance_eps, 1.0) * eps;
     tolerances_.min_cos = std::cos(options.normal_tolerance_degrees * std::numbers::pi / 180.0);
     tolerances_.icp_cutoff = eps;
     tolerances_.icp_iterations = options.icp_iterations;
     probe_cutoff_ = std::min(2.0 * tolerances_.tolerance, eps);
     sort_by_dihedral(exemplar_keypoints_);
     sort_by_dihedral(exemplar_samples_);
-    find_flat_disk(exemplar.model.mesh);
+    find_flat_disk(exemplar.mesh);
   }
 
   double tolerance() const { return tolerances_.tolerance; }
@@ -302,21 +294,22 @@ std::vector<std::size_t> usage_order(const std::vector<Motion>& motions) {
 
 }  // namespace
 
-RSimilarityResult estimate_r_similarity(const PreparedModel& exemplar, const PreparedModel& candidate,
+RSimilarityResult estimate_r_similarity(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r,
                                         const RSimilarityOptions& options, const ProgressCallback& progress) {
-  if (exemplar.model.is_point_cloud() || candidate.model.is_point_cloud())
-    throw InputError("r-similarity needs triangle meshes, not point clouds");
+  if (exemplar.mesh.triangles.empty() || candidate.mesh.triangles.empty())
+    throw InputError("r-similarity needs triangle meshes");
+  if (!(r > 0.0) || !std::isfinite(r)) throw InputError("r-similarity needs a positive radius r");
   if (options.samples == 0 || options.batch_size == 0 || !(options.spacing_r > 0.0) || !(options.tolerance_eps > 0.0))
     throw InputError("r-similarity options: samples, batch size, spacing and tolerance must be positive");
   report_progress(progress, "r-similarity", 0.0);
-  const Matcher matcher(exemplar, candidate, options);
+  const Matcher matcher(exemplar, candidate, r, options);
   RSimilarityResult result;
-  result.r = exemplar.surface.r();
+  result.r = r;
   result.tolerance = matcher.tolerance();
   result.dense_samples_exemplar = matcher.exemplar_index().samples().size();
   result.dense_samples_candidate = matcher.candidate_index().samples().size();
 
-  const std::vector<SurfacePoint> points = test_points(candidate.model.mesh, options.samples, options.seed);
+  const std::vector<SurfacePoint> points = test_points(candidate.mesh, options.samples, options.seed);
   result.samples = points.size();
   std::vector<Motion> motions{{RigidTransform{}, 0}};
   std::vector<SampleOutcome> outcomes(points.size());

@@ -25,7 +25,8 @@
 // for any thread count. Smooth curved neighbourhoods without feature lines within r are matched
 // only through step 1 (motions found at feature points of the same piece) or step 3.
 
-#include "geometry/prepared_model.h"
+#include "geometry/feature_lines.h"
+#include "geometry/mesh.h"
 #include "geometry/progress.h"
 
 #include <cstddef>
@@ -38,7 +39,7 @@ struct RSimilarityOptions {
   std::size_t samples = 1000;            ///< test points on the candidate (area-uniform)
   std::uint64_t seed = 1;                ///< seeds test points and dense samples
   double spacing_r = 0.2;                ///< dense sample spacing as a fraction of r
-  double tolerance_eps = 0.25;           ///< distance tolerance as a fraction of the voxel size eps (= r/4)
+  double tolerance_eps = 0.25;           ///< distance tolerance as a fraction of eps = r/4 (at most 1)
   double normal_tolerance_degrees = 10.0;
   double dihedral_tolerance_degrees = 5.0;  ///< feature points pair only when their dihedral angles agree
   int icp_iterations = 10;
@@ -61,10 +62,15 @@ struct RSimilarityResult {
   std::size_t dense_samples_exemplar = 0, dense_samples_candidate = 0;
 };
 
-/// Estimates how r-similar `candidate` is to `exemplar` (both welded meshes with feature lines and
-/// voxel surfaces; r = the exemplar's surface r, and the candidate's voxel size should be the
-/// same). Throws InputError when either is a point cloud.
-RSimilarityResult estimate_r_similarity(const PreparedModel& exemplar, const PreparedModel& candidate,
+/// A welded mesh with its feature lines (extract_feature_lines at spacing eps = r/4).
+struct SimilarityInput {
+  const TriangleMesh& mesh;
+  const FeatureLines& feature_lines;
+};
+
+/// Estimates how r-similar `candidate` is to `exemplar` for radius r (model units). Throws
+/// InputError when either mesh has no triangles or r is not positive.
+RSimilarityResult estimate_r_similarity(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r,
                                         const RSimilarityOptions& options = {}, const ProgressCallback& progress = {});
 
 }  // namespace dg

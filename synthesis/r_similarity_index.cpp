@@ -1,5 +1,8 @@
 #include "synthesis/r_similarity_index.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -7,22 +10,21 @@
 namespace dg {
 namespace {
 
-// splitmix64: a small, well-mixed hash used as a per-triangle random stream.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 double unit(std::uint64_t& state) {
-  state = mix(state);
+  state = splitmix64(state);
   return static_cast<double>(state >> 11) * 0x1.0p-53;
 }
 
 constexpr std::int64_t kKeyBias = 1 << 20;
 
 }  // namespace
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
 
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
@@ -46,7 +48,7 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 
 SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gather_radius, double max_cutoff,
                            std::uint64_t seed)
-    : mesh_(mesh), cell_(gather_radius), triangle_cell_(max_cutoff) {
+    : mesh_(mesh), cell_(gather_radius), triangle_cell_(2.0 * max_cutoff) {
   triangle_normals_.reserve(mesh.triangles.size());
   std::vector<SurfacePoint> points;
   const double inverse_cell_area = 1.0 / (spacing * spacing);
@@ -55,7 +57,7 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
     const double length = area_vector.norm();
     const Vec3 normal = length > 0.0 ? Vec3(area_vector / length) : Vec3::UnitZ();
     triangle_normals_.push_back(normal);
-    std::uint64_t state = mix(seed ^ mix(t));
+    std::uint64_t state = splitmix64(seed ^ splitmix64(t));
     const double expected = 0.5 * length * inverse_cell_area;
     const auto count = static_cast<std::size_t>(std::floor(expected + unit(state)));
     const auto [a, b, c] = mesh.corners(t);
@@ -76,45 +78,57 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
     buckets_[k].second = i + 1;
     samples_.push_back(points[order[i]]);
   }
-  build_triangle_grid();
+  build_triangle_grid(max_cutoff);
 }
 
-// Lists each triangle in every cell whose centre lies within cutoff + half the cell diagonal of
-// it, so a query needs only the cell holding q. Cells are visited column by column along the
-// triangle's dominant normal axis, only near its plane.
-void SurfaceIndex::build_triangle_grid() {
+// Lists each triangle in every cell whose centre lies within max_cutoff + half the cell diagonal
+// of it, so a query needs only the cell holding q. Cells are 2 x max_cutoff wide; candidates are
+// visited column by column along the triangle's dominant normal axis, only near its plane.
+void SurfaceIndex::build_triangle_grid(double max_cutoff) {
   const double g = triangle_cell_;
-  const double reach = g + 0.5 * std::sqrt(3.0) * g;
+  const double reach = max_cutoff + 0.5 * std::sqrt(3.0) * g;
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t triangles = mesh_.triangles.size(), chunks = (triangles + kChunk - 1) / kChunk;
+  std::vector<std::vector<std::pair<Key, std::uint32_t>>> per_chunk(chunks);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
+    auto& items = per_chunk[chunk];
+    const auto end = static_cast<std::uint32_t>(std::min(triangles, (chunk + 1) * kChunk));
+    for (auto t = static_cast<std::uint32_t>(chunk * kChunk); t < end; ++t) {
+      const auto [a, b, c] = mesh_.corners(t);
+      const Vec3 n = triangle_normals_[t];
+      int w = 0;
+      n.cwiseAbs().maxCoeff(&w);
+      const int u = (w + 1) % 3, v = (w + 2) % 3;
+      const Vec3 lo = a.cwiseMin(b).cwiseMin(c).array() - reach, hi = a.cwiseMax(b).cwiseMax(c).array() + reach;
+      auto index = [g](double x) { return static_cast<std::int64_t>(std::floor(x / g)); };
+      for (std::int64_t i = index(lo[u]); i <= index(hi[u]); ++i)
+        for (std::int64_t j = index(lo[v]); j <= index(hi[v]); ++j) {
+          // Range of the plane's w over the column, widened by the reach along the normal.
+          double w_lo = hi[w], w_hi = lo[w];
+          for (int corner = 0; corner < 4; ++corner) {
+            const double cu = static_cast<double>(i + (corner & 1)) * g, cv = static_cast<double>(j + (corner >> 1)) * g;
+            const double plane_w = a[w] - (n[u] * (cu - a[u]) + n[v] * (cv - a[v])) / n[w];
+            w_lo = std::min(w_lo, plane_w);
+            w_hi = std::max(w_hi, plane_w);
+          }
+          const double slack = reach / std::abs(n[w]);
+          for (std::int64_t k = index(std::max(lo[w], w_lo - slack)); k <= index(std::min(hi[w], w_hi + slack)); ++k) {
+            Vec3 centre;
+            centre[u] = (static_cast<double>(i) + 0.5) * g;
+            centre[v] = (static_cast<double>(j) + 0.5) * g;
+            centre[w] = (static_cast<double>(k) + 0.5) * g;
+            if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() <= reach * reach)
+              items.emplace_back(key(centre, g), t);
+          }
+        }
+    }
+  });
   std::vector<std::pair<Key, std::uint32_t>> items;
-  for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
-    const auto [a, b, c] = mesh_.corners(t);
-    const Vec3 n = triangle_normals_[t];
-    int w = 0;
-    n.cwiseAbs().maxCoeff(&w);
-    const int u = (w + 1) % 3, v = (w + 2) % 3;
-    const Vec3 lo = a.cwiseMin(b).cwiseMin(c).array() - reach, hi = a.cwiseMax(b).cwiseMax(c).array() + reach;
-    auto index = [g](double x) { return static_cast<std::int64_t>(std::floor(x / g)); };
-    for (std::int64_t i = index(lo[u]); i <= index(hi[u]); ++i)
-      for (std::int64_t j = index(lo[v]); j <= index(hi[v]); ++j) {
-        // Range of the plane's w over the column, widened by the reach along the normal.
-        double w_lo = hi[w], w_hi = lo[w];
-        for (int corner = 0; corner < 4; ++corner) {
-          const double cu = static_cast<double>(i + (corner & 1)) * g, cv = static_cast<double>(j + (corner >> 1)) * g;
-          const double plane_w = a[w] - (n[u] * (cu - a[u]) + n[v] * (cv - a[v])) / n[w];
-          w_lo = std::min(w_lo, plane_w);
-          w_hi = std::max(w_hi, plane_w);
-        }
-        const double slack = reach / std::abs(n[w]);
-        for (std::int64_t k = index(std::max(lo[w], w_lo - slack)); k <= index(std::min(hi[w], w_hi + slack)); ++k) {
-          Vec3 centre;
-          centre[u] = (static_cast<double>(i) + 0.5) * g;
-          centre[v] = (static_cast<double>(j) + 0.5) * g;
-          centre[w] = (static_cast<double>(k) + 0.5) * g;
-          if ((closest_point_on_triangle(centre, a, b, c) - centre).norm() <= reach) items.emplace_back(key(centre, g), t);
-        }
-      }
+  for (auto& chunk : per_chunk) {
+    items.insert(items.end(), chunk.begin(), chunk.end());
+    std::vector<std::pair<Key, std::uint32_t>>().swap(chunk);
   }
-  std::sort(items.begin(), items.end());
+  tbb::parallel_sort(items.begin(), items.end());
   cell_triangles_.reserve(items.size());
   for (std::uint32_t i = 0; i < items.size(); ++i) {
     if (i == 0 || items[i - 1].first != items[i].first) triangle_buckets_[items[i].first] = {i, i};

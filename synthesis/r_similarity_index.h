@@ -43,19 +43,22 @@ class SurfaceIndex {
   using Key = std::uint64_t;
   using Range = std::pair<std::uint32_t, std::uint32_t>;
   static Key key(const Vec3& p, double cell);
-  void build_triangle_grid();
+  void build_triangle_grid(double max_cutoff);
   template <class Visit>
   bool visit_triangles(const Vec3& q, Visit&& visit) const;
 
   const TriangleMesh& mesh_;
   double cell_ = 1.0;           // sample bucket size
-  double triangle_cell_ = 1.0;  // triangle grid cell size (= max_cutoff)
+  double triangle_cell_ = 1.0;  // triangle grid cell size (= 2 max_cutoff)
   std::vector<Vec3> triangle_normals_;
   std::vector<SurfacePoint> samples_;
   std::unordered_map<Key, Range> buckets_;           // key -> sample range
   std::vector<std::uint32_t> cell_triangles_;
   std::unordered_map<Key, Range> triangle_buckets_;  // key -> range of cell_triangles_
 };
+
+/// splitmix64: a small, well-mixed 64-bit hash (per-triangle random streams, fixed shuffles).
+std::uint64_t splitmix64(std::uint64_t x);
 
 /// Closest point to p on triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);

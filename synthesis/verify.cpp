@@ -1,14 +1,19 @@
 #include "synthesis/verify.h"
 
+#include "geometry/cleaning.h"
 #include "geometry/errors.h"
+#include "geometry/feature_edges.h"
+#include "geometry/feature_lines.h"
 #include "geometry/model_io.h"
 #include "geometry/self_intersections.h"
+#include "geometry/voxel_surface.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace dg {
 namespace {
@@ -26,9 +31,29 @@ class Stopwatch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-ModelChecks topology_checks(const PreparedModel& prepared) {
+// A welded, cleaned mesh with its cleaning report and feature lines.
+struct CleanModel {
+  TriangleMesh mesh;
+  CleaningReport cleaning;
+  FeatureLines feature_lines;
+};
+
+CleanModel clean_model(Model model, const char* role) {
+  const std::string name = model.source_path.empty() ? std::string(role) : model.source_path;
+  if (model.is_point_cloud()) throw InputError(name + ": the " + role + " is a point cloud; verify needs triangle meshes");
+  CleanModel clean{std::move(model.mesh), {}, {}};
+  clean.cleaning = clean_mesh(clean.mesh);
+  if (clean.mesh.triangles.empty()) throw InputError(name + ": no triangles left after dropping degenerate ones");
+  return clean;
+}
+
+void add_feature_lines(CleanModel& model, double r) {
+  model.feature_lines = extract_feature_lines(model.mesh, find_feature_edges(model.mesh), r / 4.0);
+}
+
+ModelChecks topology_checks(const CleanModel& model) {
   ModelChecks checks;
-  const CleaningReport& c = prepared.cleaning;
+  const CleaningReport& c = model.cleaning;
   checks.boundary_edges = c.boundary_edges;
   checks.non_manifold_edges = c.non_manifold_edges;
   checks.inconsistent_edges = c.inconsistent_edges;
@@ -36,12 +61,6 @@ ModelChecks topology_checks(const PreparedModel& prepared) {
   checks.oriented = c.inconsistent_edges == 0;
   checks.triangles = c.triangles;
   return checks;
-}
-
-void require_mesh(const Model& model, const char* role) {
-  if (model.is_point_cloud())
-    throw InputError(fmt::format("{}: the {} is a point cloud; verify needs triangle meshes",
-                                 model.source_path.empty() ? std::string(role) : model.source_path, role));
 }
 
 }  // namespace
@@ -60,33 +79,39 @@ VerifyReport verify_models(const std::filesystem::path& exemplar, const std::fil
 
 VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions& options,
                            const ProgressCallback& progress) {
-  require_mesh(exemplar, "exemplar");
-  require_mesh(candidate, "candidate");
+  if (!std::isfinite(options.r) || options.r < 0.0)
+    throw InputError("-r must be a positive number of model units (0 or absent = default)");
   VerifyReport report;
   report.exemplar_path = exemplar.source_path;
   report.candidate_path = candidate.source_path;
   Stopwatch clock;
-  PrepareOptions prepare_options;
-  prepare_options.r = options.r;
-  const PreparedModel exemplar_prepared = prepare_model(std::move(exemplar), prepare_options, progress);
-  prepare_options.r = exemplar_prepared.surface.r();
-  const PreparedModel candidate_prepared = prepare_model(std::move(candidate), prepare_options, progress);
-  report.timings.push_back({"prepare", clock.lap()});
+  report_progress(progress, "clean", 0.0);
+  CleanModel exemplar_clean = clean_model(std::move(exemplar), "exemplar");
+  CleanModel candidate_clean = clean_model(std::move(candidate), "candidate");
+  const double r = options.r > 0.0 ? options.r : default_radius(exemplar_clean.mesh.bounds());
+  if (!(r > 0.0)) throw InputError(report.exemplar_path + ": the exemplar has zero extent; pass -r");
+  report.timings.push_back({"clean", clock.lap()});
+  report_progress(progress, "feature lines", 0.0);
+  add_feature_lines(exemplar_clean, r);
+  add_feature_lines(candidate_clean, r);
+  report.timings.push_back({"feature lines", clock.lap()});
 
-  report.exemplar = topology_checks(exemplar_prepared);
-  report.candidate = topology_checks(candidate_prepared);
+  report.exemplar = topology_checks(exemplar_clean);
+  report.candidate = topology_checks(candidate_clean);
   report_progress(progress, "self-intersections", 0.0);
   const SelfIntersections exemplar_intersections =
-      find_self_intersections(exemplar_prepared.model.mesh, SelfIntersectionOptions{0});
+      find_self_intersections(exemplar_clean.mesh, SelfIntersectionOptions{0});
   const SelfIntersections candidate_intersections =
-      find_self_intersections(candidate_prepared.model.mesh, SelfIntersectionOptions{options.max_intersecting_pairs});
+      find_self_intersections(candidate_clean.mesh, SelfIntersectionOptions{options.max_intersecting_pairs});
   report.exemplar.self_intersects = exemplar_intersections.any;
   report.candidate.self_intersects = candidate_intersections.any;
   report.candidate.self_intersections = candidate_intersections.pairs.size();
   report.candidate.self_intersections_capped = candidate_intersections.capped;
   report.timings.push_back({"self-intersections", clock.lap()});
 
-  report.similarity = estimate_r_similarity(exemplar_prepared, candidate_prepared, options.similarity, progress);
+  report.similarity = estimate_r_similarity({exemplar_clean.mesh, exemplar_clean.feature_lines},
+                                            {candidate_clean.mesh, candidate_clean.feature_lines}, r,
+                                            options.similarity, progress);
   report.timings.push_back({"r-similarity", clock.lap()});
 
   const bool exemplar_closed = report.exemplar.closed && report.exemplar.oriented;

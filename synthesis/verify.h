@@ -54,7 +54,7 @@ struct VerifyReport {
   std::vector<StageTiming> timings;  ///< seconds per stage
 };
 
-/// Loads both models (InputError when unreadable, invalid or a point cloud), then checks the
+/// Loads and welds both models (InputError when unreadable, invalid or a point cloud), then checks the
 /// candidate: closed and oriented if the exemplar is; free of self-intersections if the
 /// exemplar is; r-similar fraction at least min_similar_fraction.
 VerifyReport verify_models(const std::filesystem::path& exemplar, const std::filesystem::path& candidate,
