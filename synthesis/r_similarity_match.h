@@ -13,9 +13,11 @@ namespace dg {
 
 struct MatchTolerances {
   double r = 1.0;          ///< neighbourhood radius, model units
-  double tolerance = 0.0;  ///< largest distance of a mapped sample from the other surface, model units (<= the indexes' max_cutoff)
-  double min_cos = 0.0;    ///< cosine of the largest angle between a mapped normal and the surface normal
-  double icp_cutoff = 0.0; ///< ICP pairs a sample with surface at most this far away, model units (<= the indexes' max_cutoff)
+  /// Largest distance of a mapped sample from the other surface, model units (<= max_cutoff of the indexes).
+  double tolerance = 0.0;
+  double min_cos = 0.0;  ///< cosine of the largest angle between a mapped normal and the surface normal
+  /// ICP pairs a sample with surface at most this far away, model units (<= max_cutoff of the indexes).
+  double icp_cutoff = 0.0;
   int icp_iterations = 10;
 };
 

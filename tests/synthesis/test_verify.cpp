@@ -90,6 +90,16 @@ TEST_CASE("verify: a larger facade is r-similar to the smaller exemplar", "[synt
   for (const dg::CheckResult& c : report.checks) CHECK(c.pass);
 }
 
+TEST_CASE("verify: r-similarity does not depend on placement (a moved and turned copy)", "[synthesis][verify]") {
+  dg::Model moved = facade_model(3, 4);
+  const Eigen::AngleAxisd turn(1.1, Vec3(1, 2, 3).normalized());
+  for (Vec3& p : moved.mesh.positions) p = turn * p + Vec3(3, 1, -2);
+  const dg::VerifyReport report = dg::verify_models(facade_model(3, 4), std::move(moved));
+  CHECK(report.pass);
+  CHECK(report.similarity.fraction >= 0.995);
+  CHECK(report.similarity.searched > 0);  // the identity fits nowhere: every motion was searched for
+}
+
 TEST_CASE("verify: the result does not depend on the thread count", "[synthesis][verify]") {
   dg::VerifyOptions options;
   options.similarity.samples = 300;
