@@ -17,6 +17,17 @@ double unit(std::uint64_t& state) {
 
 constexpr std::int64_t kKeyBias = 1 << 20;
 
+// Maps each key of a sorted key sequence (key_at(0 .. n-1)) to its index range.
+template <class Key, class Range, class KeyAt>
+void fill_ranges(std::size_t n, const KeyAt& key_at, std::unordered_map<Key, Range>& ranges) {
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin + 1;
+    while (end < n && key_at(end) == key_at(begin)) ++end;
+    ranges.emplace(key_at(begin), Range{static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)});
+    begin = end;
+  }
+}
+
 }  // namespace
 
 std::uint64_t splitmix64(std::uint64_t x) {
@@ -72,12 +83,8 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return keys[i] < keys[j]; });
   samples_.reserve(points.size());
-  for (std::uint32_t i = 0; i < order.size(); ++i) {
-    const Key k = keys[order[i]];
-    if (i == 0 || keys[order[i - 1]] != k) buckets_[k] = {i, i};
-    buckets_[k].second = i + 1;
-    samples_.push_back(points[order[i]]);
-  }
+  for (std::uint32_t i : order) samples_.push_back(points[i]);
+  fill_ranges(order.size(), [&](std::size_t i) { return keys[order[i]]; }, buckets_);
   build_triangle_grid(max_cutoff);
 }
 
@@ -130,11 +137,8 @@ void SurfaceIndex::build_triangle_grid(double max_cutoff) {
   }
   tbb::parallel_sort(items.begin(), items.end());
   cell_triangles_.reserve(items.size());
-  for (std::uint32_t i = 0; i < items.size(); ++i) {
-    if (i == 0 || items[i - 1].first != items[i].first) triangle_buckets_[items[i].first] = {i, i};
-    triangle_buckets_[items[i].first].second = i + 1;
-    cell_triangles_.push_back(items[i].second);
-  }
+  for (const auto& item : items) cell_triangles_.push_back(item.second);
+  fill_ranges(items.size(), [&](std::size_t i) { return items[i].first; }, triangle_buckets_);
 }
 
 SurfaceIndex::Key SurfaceIndex::key(const Vec3& p, double cell) {
