@@ -107,7 +107,10 @@ void align_motif_frames(std::vector<SceneNode>& nodes, Instancing& instancing, d
     if (best == candidates.end() || best->slope[0] != 0 || std::abs(best->start[0]) < trivial_turn_deg) continue;
     const double offset = best->start[0];
     for (SceneNode& node : nodes)
-      if (node.type == terminal.symbol) node.frame.angle_deg = wrap_degrees(node.frame.angle_deg + offset);
+      if (node.type == terminal.symbol) {
+        node.frame.angle_deg = wrap_degrees(node.frame.angle_deg + offset);
+        node.exit = node.frame;
+      }
     const Eigen::Rotation2Dd back(-offset * std::numbers::pi / 180);
     for (auto& line : terminal.motif)
       for (Vec2& p : line) p = back * p;
@@ -143,8 +146,13 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
 
   std::vector<SceneNode> nodes;
   for (const TerminalInstance& instance : instancing.instances)
-    nodes.push_back(SceneNode{instancing.terminals[instance.terminal].symbol, instance.frame,
+  {
+    const Terminal& terminal = instancing.terminals[instance.terminal];
+    // A segment `F` moves the turtle to its end; a motif leaves it in place.
+    const InstanceFrame exit = terminal.segment ? apply_transform(instance.frame, {0, terminal.step, 1, 0}) : instance.frame;
+    nodes.push_back(SceneNode{terminal.symbol, instance.frame, exit,
                               sample_points(shapes[instance.element], options.proximity_samples), instance.similarity});
+  }
 
   Instancing terminals = instancing;
   align_motif_frames(nodes, terminals, diagonal, options.clusters);
@@ -184,6 +192,7 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
       SceneNode node;
       node.type = name + "(" + std::to_string(rule.counters[g]) + ")";
       node.frame = nodes[group.front()].frame;
+      node.exit = node.frame;  // rule instances are placed in brackets
       double similarity = 0;
       std::size_t total = 0;
       for (std::size_t i : group) total += nodes[i].samples.size();
@@ -210,7 +219,8 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   if (std::abs(root.frame.scale - 1) >= trivial_scale) axiom = "*(" + number(root.frame.scale, kScaleDecimals) + ")";
   axiom = join({axiom, placed(root.type, nodes.size() == 1)});
   for (std::size_t i = 1; i < nodes.size(); ++i) {
-    const TurtleTransform t = relative_transform(root.frame, nodes[i].frame);
+    const TurtleTransform t = relative_transform(nodes.size() > 1 && root.type.find('(') == std::string::npos ? root.exit : root.frame,
+                                                 nodes[i].frame);
     axiom = join({axiom, "[" + join({transform_text(t, {}), nodes[i].type}) + "]"});
   }
   std::ostringstream text;

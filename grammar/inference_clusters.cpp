@@ -42,8 +42,8 @@ std::vector<Pair> neighbour_pairs(const std::vector<SceneNode>& nodes, const std
       const std::size_t j = distances[n].second;
       for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}})
         if (seen.emplace(a, b).second)
-          pairs.push_back(Pair{a, b, relative_transform(nodes[a].frame, nodes[b].frame),
-                               (nodes[b].frame.position - nodes[a].frame.position).norm()});
+          pairs.push_back(Pair{a, b, relative_transform(nodes[a].exit, nodes[b].frame),
+                               (nodes[b].frame.position - nodes[a].exit.position).norm()});
     }
   }
   return pairs;
@@ -145,6 +145,18 @@ bool fit_rule(const std::vector<Pair>& pairs, std::vector<std::vector<std::size_
       double max_m = 0;
       for (const auto& chain : chains) max_m = std::max(max_m, static_cast<double>(chain.size() + 1));
       if (std::abs(b) * max_m <= coordinate_tolerance(c, a, options) / 2) b = 0, a = sv / count;
+      if (b == 0) {  // a constant within the spread of its links from the neutral value is that value (§5.7)
+        double spread = 0;
+        for (const auto& chain : chains)
+          for (std::size_t k = 0; k < chain.size(); ++k) {
+            double v = pairs[chain[k]].t[c];
+            if (is_angle(c)) v = reference[c] + wrap_degrees(v - reference[c]);
+            spread += (v - a) * (v - a);
+          }
+        spread = std::sqrt(spread / count);
+        const double neutral = c == 2 ? 1.0 : 0.0;
+        if (c != 1 && std::abs(a - neutral) <= 2 * spread) a = neutral;
+      }
       start[c] = is_angle(c) ? wrap_degrees(a) : a;
       slope[c] = b;
     }

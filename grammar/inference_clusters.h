@@ -17,6 +17,7 @@ namespace dg {
 struct SceneNode {
   std::string type;            ///< equal types are interchangeable: "A", "P0(3)", ...
   InstanceFrame frame;
+  InstanceFrame exit;          ///< where the turtle is after placing it (a segment moves it to its end)
   std::vector<Vec2> samples;   ///< points on its strokes (y-up), for proximity
   double similarity = 1;       ///< how well it matches its type's representative
 };
