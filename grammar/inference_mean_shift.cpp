@@ -38,12 +38,12 @@ struct Grid {
   }
 };
 
+// a - b for coordinates in [0, period): the shorter way round.
 double wrapped_difference(double a, double b, double period) {
   double d = a - b;
   if (period > 0) {
-    d = std::fmod(d, period);
     if (d > period / 2) d -= period;
-    if (d <= -period / 2) d += period;
+    else if (d <= -period / 2) d += period;
   }
   return d;
 }
@@ -104,6 +104,7 @@ ShiftClusters mean_shift(const std::vector<ShiftPoint>& input, int dimensions, c
   };
   // Shift each seed (the mean of an occupied cell) to its mode.
   std::vector<ShiftPoint> modes;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> accepted;  // cell -> modes in or next to it
   std::vector<std::uint64_t> keys;
   for (const auto& entry : grid.cells) keys.push_back(entry.first);
   std::sort(keys.begin(), keys.end());
@@ -128,20 +129,38 @@ ShiftClusters mean_shift(const std::vector<ShiftPoint>& input, int dimensions, c
       if (shift < 1e-8) break;
     }
     bool merged = false;
-    for (const ShiftPoint& m : modes)
-      if (distance(m, x) < 0.5) merged = true;
-    if (!merged) modes.push_back(x);
+    const auto near = accepted.find(Grid::key(grid.cell_of(x)));
+    for (std::size_t m : near == accepted.end() ? std::vector<std::size_t>{} : near->second)
+      if (distance(modes[m], x) < 0.5) merged = true;
+    if (!merged) {
+      // Registered in its cell and the neighbouring cells, so one lookup finds every mode within 0.5.
+      const Cell c = grid.cell_of(x);
+      const int total = static_cast<int>(std::pow(3, dimensions));
+      for (int code = 0; code < total; ++code) {
+        Cell n = c;
+        int rest = code;
+        for (int k = 0; k < dimensions; ++k, rest /= 3) n[k] = grid.wrap_cell(k, c[k] + rest % 3 - 1);
+        auto& list = accepted[Grid::key(n)];
+        if (list.empty() || list.back() != modes.size()) list.push_back(modes.size());
+      }
+      modes.push_back(x);
+    }
   }
-  // Assign points to the nearest mode within radius 1.
+  // Assign points to the nearest mode within radius 1 (modes looked up in the same cells).
+  Grid mode_grid = grid;
+  mode_grid.cells.clear();
+  for (std::size_t m = 0; m < modes.size(); ++m) mode_grid.cells[Grid::key(mode_grid.cell_of(modes[m]))].push_back(m);
+  std::swap(grid.cells, mode_grid.cells);  // for_neighbours now visits modes
   std::vector<std::size_t> sizes(modes.size(), 0);
   std::vector<int> labels(points.size(), -1);
   for (std::size_t i = 0; i < points.size(); ++i) {
     double best = 1;
-    for (std::size_t m = 0; m < modes.size(); ++m) {
+    std::size_t chosen = modes.size();
+    for_neighbours(points[i], [&](std::size_t m) {
       const double d = distance(points[i], modes[m]);
-      if (d <= best) best = d, labels[i] = static_cast<int>(m);
-    }
-    if (labels[i] >= 0) ++sizes[static_cast<std::size_t>(labels[i])];
+      if (d < best || (d == best && m < chosen)) best = d, chosen = m;
+    });
+    if (chosen < modes.size()) labels[i] = static_cast<int>(chosen), ++sizes[chosen];
   }
   std::vector<std::size_t> order(modes.size());
   std::iota(order.begin(), order.end(), 0);

@@ -1,0 +1,84 @@
+// Bench of the vector L-system inference (Št'ava et al. 2010): drawings of 100 to 5,000
+// elements are made by the L-system engine (a window grid, a branching tree of leaves, a spiral
+// of leaves with a linearly changing step, a bracketed plant of segments), then inferred.
+// Prints one line per drawing: kind, elements, seconds (instancing, rules, total), rules made,
+// grammar length. Usage: dockgrammar-bench-lsystem [--quick]
+
+#include "geometry/svg_reader.h"
+#include "grammar/derivation.h"
+#include "grammar/grammar_length.h"
+#include "grammar/inference.h"
+#include "grammar/lsystem_text.h"
+#include "synthesis/turtle.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+// The drawing an L-system makes, as SVG elements (y down), one per stroke.
+dg::SvgDrawing draw(const std::string& text) {
+  const dg::LSystem system = dg::parse_lsystem_text(text, "bench");
+  const dg::Derivation derivation = dg::derive(system);
+  const dg::Drawing drawing = dg::interpret(derivation.modules, dg::turtle_options(system.turtle));
+  dg::SvgDrawing svg;
+  for (const dg::Stroke& stroke : drawing.strokes) {
+    dg::SvgElement element{"path", 0, {}};
+    for (const auto& line : dg::flatten_path(stroke.path, 0.02)) {
+      std::vector<dg::Vec2> down;
+      for (const dg::Vec2& p : line) down.emplace_back(p.x(), -p.y());
+      element.polylines.push_back(std::move(down));
+    }
+    svg.elements.push_back(std::move(element));
+  }
+  return svg;
+}
+
+void run(const std::string& kind, const std::string& text) {
+  const dg::SvgDrawing drawing = draw(text);
+  const dg::InferredLSystem inferred = dg::infer_lsystem(drawing);
+  fmt::print("{:<10} {:>6} elements  {:>8.3f} s  (instancing {:.3f} s, rules {:.3f} s)  {:>4} rules  grammar length {}\n", kind,
+             drawing.elements.size(), inferred.timings.total_s, inferred.timings.instancing_s, inferred.timings.rules_s,
+             inferred.rules, dg::grammar_length(inferred.lsystem));
+}
+
+std::string grid(int rows, int columns) {
+  return fmt::format(
+      "axiom: P1({})\nmotif A: M 0 0 L 9 0 L 9 7 L 0 7 Z\n"
+      "P0(m) : m>0 -> A f(13) P0(m-1)\nP0(m) : m==0 -> ε\n"
+      "P1(m) : m>0 -> [P0({})] +(90) f(10) -(90) P1(m-1)\nP1(m) : m==0 -> ε\n",
+      rows, columns);
+}
+
+std::string tree(int depth) {
+  return fmt::format(
+      "axiom: R({})\nR(m) : m>0 -> A [-(17) f(64) *(0.8) -(3) R(m-1)] [+(7) f(181) *(0.6) +(23) R(m-1)]\n"
+      "R(m) : m==0 -> A\n",
+      depth);
+}
+
+std::string spiral(int count) {
+  return fmt::format("axiom: P({})\nP(m) : m>0 -> A f(20+0.05*m) +(3) P(m-1)\nP(m) : m==0 -> ε\n", count);
+}
+
+std::string plant(int iterations) {
+  return fmt::format("axiom: F\nangle: 25.7\nstep: 10\nheading: 90\niterations: {}\nF -> F[+F]F[-F]F\n", iterations);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+  for (const auto& [rows, columns] : std::vector<std::pair<int, int>>{{10, 10}, {20, 25}, {32, 37}, {40, 50}, {50, 100}})
+    if (!quick || rows * columns <= 1184) run("grid", grid(rows, columns));
+  for (int depth : {5, 7, 9, 10, 11, 12})
+    if (!quick || depth <= 9) run("tree", tree(depth));
+  for (int count : {100, 500, 1184, 2000, 5000})
+    if (!quick || count <= 1184) run("spiral", spiral(count));
+  for (int iterations : {3, 4, 5})
+    if (!quick || iterations <= 4) run("plant", plant(iterations));
+  return 0;
+}
