@@ -144,6 +144,7 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   result.timings.instancing_s = seconds_since(start_time);
   const double diagonal = (high - low).norm();
 
+  const auto rules_start = std::chrono::steady_clock::now();
   std::vector<SceneNode> nodes;
   for (const TerminalInstance& instance : instancing.instances)
   {
@@ -160,7 +161,6 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   std::vector<std::string> rule_lines;
   std::optional<double> headline_angle, headline_scale;
   int sequences = 0, branchings = 0;
-  const auto rules_start = std::chrono::steady_clock::now();
   while (nodes.size() > 1 && static_cast<int>(result.rules) < options.max_rules) {
     const std::vector<RuleCandidate> candidates = find_rule_candidates(nodes, diagonal, options.clusters);
     const auto best = std::find_if(candidates.begin(), candidates.end(), [](const RuleCandidate& c) { return c.absorbed > 0; });

@@ -293,28 +293,81 @@ void branching_candidates(const std::vector<Pair>& pairs, const std::vector<std:
   out.push_back(std::move(result));
 }
 
+ShiftPoint full_space_point(const TurtleTransform& t, double diagonal, const ClusterOptions& options) {
+  const double log_d = std::log(std::max(t[1], 1e-9 * std::max(diagonal, 1e-12))) / options.log_distance_bandwidth;
+  return {t[0] / options.angle_bandwidth_deg, log_d, std::log(t[2]) / options.log_scale_bandwidth, t[3] / options.angle_bandwidth_deg};
+}
+
+// Completes the strongest clusters of the full space: every element is moved by each strong
+// cluster's mean transform, and an element of the same type found there (position within 3 %
+// of the move, angle and scale within the tolerances) is paired with it, even when it is not
+// among the nearest neighbours (crowded drawings, small elements beside large ones).
+void add_predicted_pairs(const std::vector<SceneNode>& nodes, const std::vector<std::size_t>& members, double diagonal,
+                         const ClusterOptions& options, std::vector<Pair>& pairs) {
+  std::vector<ShiftPoint> points;
+  for (const Pair& p : pairs) points.push_back(full_space_point(p.t, diagonal, options));
+  const double period = 360.0 / options.angle_bandwidth_deg;
+  const ShiftClusters clusters = mean_shift(points, 4, {period, 0, 0, period});
+  const std::size_t strong = std::min<std::size_t>(clusters.centers.size(), static_cast<std::size_t>(options.max_branch_clusters));
+  std::vector<TurtleTransform> means(strong, TurtleTransform{0, 0, 0, 0});
+  std::vector<double> counts(strong, 0);
+  std::vector<TurtleTransform> reference(strong);
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const int label = clusters.labels[p];
+    if (label < 0 || static_cast<std::size_t>(label) >= strong) continue;
+    const std::size_t c = static_cast<std::size_t>(label);
+    if (counts[c] == 0) reference[c] = pairs[p].t;
+    for (int k = 0; k < 4; ++k)
+      means[c][k] += is_angle(k) ? reference[c][k] + wrap_degrees(pairs[p].t[k] - reference[c][k]) : pairs[p].t[k];
+    counts[c] += 1;
+  }
+  std::vector<std::size_t> by_x(members);
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return nodes[a].frame.position.x() < nodes[b].frame.position.x(); });
+  std::set<std::pair<std::size_t, std::size_t>> present;
+  for (const Pair& p : pairs) present.emplace(p.from, p.to);
+  for (std::size_t c = 0; c < strong; ++c) {
+    if (counts[c] < 2) continue;
+    TurtleTransform t = means[c];
+    for (int k = 0; k < 4; ++k) t[k] /= counts[c];
+    for (std::size_t i : members) {
+      const InstanceFrame target = apply_transform(nodes[i].exit, t);
+      const double radius = 0.03 * t[1] * nodes[i].exit.scale + 1e-6 * diagonal;
+      auto it = std::lower_bound(by_x.begin(), by_x.end(), target.position.x() - radius,
+                                 [&](std::size_t n, double x) { return nodes[n].frame.position.x() < x; });
+      for (; it != by_x.end() && nodes[*it].frame.position.x() <= target.position.x() + radius; ++it) {
+        const SceneNode& candidate = nodes[*it];
+        if (*it == i || (candidate.frame.position - target.position).norm() > radius) continue;
+        if (std::abs(wrap_degrees(candidate.frame.angle_deg - target.angle_deg)) > options.angle_tolerance_deg) continue;
+        if (std::abs(candidate.frame.scale / target.scale - 1) > options.relative_tolerance) continue;
+        if (!present.emplace(i, *it).second) continue;
+        pairs.push_back(Pair{i, *it, relative_transform(nodes[i].exit, candidate.frame),
+                             (candidate.frame.position - nodes[i].exit.position).norm()});
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<RuleCandidate> find_rule_candidates(const std::vector<SceneNode>& nodes, double diagonal, const ClusterOptions& options) {
   std::map<std::string, std::vector<std::size_t>> by_type;
   for (std::size_t i = 0; i < nodes.size(); ++i) by_type[nodes[i].type].push_back(i);
-  const double bw_angle = options.angle_bandwidth_deg, period = 360.0 / bw_angle;
+  const double period = 360.0 / options.angle_bandwidth_deg;
   std::vector<Scored> all;
   std::set<std::vector<std::vector<std::size_t>>> seen;
   for (const auto& [type, members] : by_type) {
     if (members.size() < 2) continue;
-    const std::vector<Pair> pairs = neighbour_pairs(nodes, members, options.neighbours);
+    std::vector<Pair> pairs = neighbour_pairs(nodes, members, options.neighbours);
+    add_predicted_pairs(nodes, members, diagonal, options, pairs);
     const Space spaces[3] = {Space{}, Space{{false, true, false, false}}, Space{{true, false, false, true}}};
     std::vector<std::vector<std::vector<std::size_t>>> full_space_chains;
     for (const Space& space : spaces) {
       std::vector<ShiftPoint> points;
       for (const Pair& p : pairs) {
-        const double log_d = std::log(std::max(p.t[1], 1e-9 * std::max(diagonal, 1e-12))) / options.log_distance_bandwidth;
-        const double log_s = std::log(p.t[2]) / options.log_scale_bandwidth;
-        const double a = p.t[0] / bw_angle, b = p.t[3] / bw_angle;
-        if (!space.free[1] && !space.free[0]) points.push_back({a, log_d, log_s, b});
-        else if (space.free[1]) points.push_back({a, log_s, b, 0});
-        else points.push_back({log_d, log_s, 0, 0});
+        const ShiftPoint f = full_space_point(p.t, diagonal, options);  // alpha, log d, log s, beta
+        if (!space.free[1] && !space.free[0]) points.push_back(f);
+        else if (space.free[1]) points.push_back({f[0], f[2], f[3], 0});
+        else points.push_back({f[1], f[2], 0, 0});
       }
       const int dims = !space.free[1] && !space.free[0] ? 4 : space.free[1] ? 3 : 2;
       const ShiftPoint periods = !space.free[1] && !space.free[0] ? ShiftPoint{period, 0, 0, period}
