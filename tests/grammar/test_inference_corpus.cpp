@@ -162,11 +162,6 @@ TEST_CASE("inference: corpus figures", "[grammar][inference][corpus]") {
   }
   for (const std::string& id : ids) {
     const bool asserted = std::find(asserted_cases.begin(), asserted_cases.end(), id) != asserted_cases.end();
-    const fs::path svg = corpus_dir / (id + ".svg");
-    if (!asserted && fs::file_size(svg) > 150000) {
-      WARN(id << ": not run here (large drawing; see docs/lsystem-inference.md)");
-      continue;
-    }
     const CaseFigures f = measure(id);
     WARN(id << ": hausdorff " << f.hausdorff_percent << " % of diagonal, grammar length " << f.length << " (gt "
             << f.gt_length << "), angle error " << f.angle_error << " deg, scale error " << f.scale_error << ", "
