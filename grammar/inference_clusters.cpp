@@ -226,6 +226,7 @@ void branching_candidates(const std::vector<Pair>& pairs, const std::vector<std:
     for (std::size_t p : chain) next_a[pairs[p].from] = p;
   for (const auto& chain : cluster_chains_b)
     for (std::size_t p : chain) next_b[pairs[p].from] = p;
+  if (next_a.empty() || next_b.empty()) return;
   std::unordered_map<std::size_t, int> depth;
   std::function<int(std::size_t)> depth_of = [&](std::size_t x) -> int {
     if (auto it = depth.find(x); it != depth.end()) return it->second;
