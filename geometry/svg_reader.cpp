@@ -587,49 +587,56 @@ bool is_hidden_container(const std::string& name) {
 
 }  // namespace
 
-SvgDrawing parse_svg(std::string_view text, const std::string& source, const SvgReadOptions& options) {
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  XmlReader reader(text, source);
-  SvgDrawing drawing;
-  struct Open {
-    std::string name;
-    Affine2 transform;
-    bool hidden;
-    std::size_t line;
-  };
-  std::vector<Open> stack;
-  bool seen_root = false;
+namespace {
+
+// The element tree: start tags in document order; subtree_end[i] is the index after the last
+// descendant of tag i.
+struct TagTree {
+  std::vector<Tag> tags;
+  std::vector<std::size_t> subtree_end;
+  std::map<std::string, std::size_t> ids;
+};
+
+TagTree read_tag_tree(XmlReader& reader) {
+  TagTree tree;
+  std::vector<std::size_t> open;
   Tag tag;
   while (reader.next(tag)) {
     if (tag.closing) {
-      if (stack.empty()) reader.fail(tag.line, "end tag </" + tag.name + "> without a start tag");
-      if (stack.back().name != tag.name)
-        reader.fail(tag.line, "end tag </" + tag.name + "> does not match <" + stack.back().name + "> of line " +
-                                  std::to_string(stack.back().line));
-      stack.pop_back();
+      if (open.empty()) reader.fail(tag.line, "end tag </" + tag.name + "> without a start tag");
+      const Tag& start = tree.tags[open.back()];
+      if (start.name != tag.name)
+        reader.fail(tag.line, "end tag </" + tag.name + "> does not match <" + start.name + "> of line " + std::to_string(start.line));
+      tree.subtree_end[open.back()] = tree.tags.size();
+      open.pop_back();
       continue;
     }
-    if (stack.empty()) {
-      if (seen_root) reader.fail(tag.line, "more than one root element");
+    if (open.empty()) {
+      if (!tree.tags.empty()) reader.fail(tag.line, "more than one root element");
       if (tag.name != "svg") reader.fail(tag.line, "root element is <" + tag.name + ">, not <svg>");
-      seen_root = true;
-      double width = attribute_number(tag, "width", 0, reader), height = attribute_number(tag, "height", 0, reader);
-      if (const auto it = tag.attributes.find("viewBox"); it != tag.attributes.end()) {
-        std::vector<double> box;
-        try {
-          box = read_number_list(it->second, "viewBox");
-        } catch (const InputError& e) {
-          reader.fail(tag.line, e.what());
-        }
-        if (box.size() != 4 || box[2] < 0 || box[3] < 0) reader.fail(tag.line, "viewBox needs four numbers with a non-negative size");
-        width = box[2];
-        height = box[3];
-      }
-      drawing.width = width;
-      drawing.height = height;
     }
-    const Affine2 parent = stack.empty() ? Affine2{} : stack.back().transform;
-    const bool parent_hidden = !stack.empty() && stack.back().hidden;
+    const std::size_t index = tree.tags.size();
+    if (const auto it = tag.attributes.find("id"); it != tag.attributes.end()) tree.ids.emplace(it->second, index);
+    tree.subtree_end.push_back(index + 1);
+    if (!tag.self_closing) open.push_back(index);
+    tree.tags.push_back(std::move(tag));
+  }
+  if (!open.empty()) reader.fail(tree.tags[open.back()].line, "<" + tree.tags[open.back()].name + "> is never closed");
+  if (tree.tags.empty()) reader.fail(reader.line(), "no <svg> element");
+  return tree;
+}
+
+struct TreeWalk {
+  const TagTree& tree;
+  const XmlReader& reader;
+  const std::string& source;
+  const SvgReadOptions& options;
+  SvgDrawing& drawing;
+
+  // Draws tag i and its subtree under `parent`; `via_use` draws a referenced symbol or an element
+  // inside defs; `depth` counts nested <use> references.
+  void walk(std::size_t i, const Affine2& parent, bool hidden, bool via_use, int depth) {
+    const Tag& tag = tree.tags[i];
     Affine2 own;
     if (const auto it = tag.attributes.find("transform"); it != tag.attributes.end()) {
       try {
@@ -639,8 +646,12 @@ SvgDrawing parse_svg(std::string_view text, const std::string& source, const Svg
       }
     }
     const Affine2 transform = parent.then_after(own);
-    const bool hidden = parent_hidden || is_hidden_container(tag.name);
-    if (!hidden) {
+    const bool now_hidden = hidden || (!via_use && is_hidden_container(tag.name));
+    if (!now_hidden && tag.name == "use") {
+      draw_use(tag, transform, depth);
+      return;
+    }
+    if (!now_hidden) {
       std::vector<Polyline> shape;
       try {
         shape = element_shape(tag, options, reader);
@@ -658,10 +669,48 @@ SvgDrawing parse_svg(std::string_view text, const std::string& source, const Svg
         drawing.elements.push_back(std::move(element));
       }
     }
-    if (!tag.self_closing) stack.push_back(Open{tag.name, transform, hidden, tag.line});
+    for (std::size_t child = i + 1; child < tree.subtree_end[i]; child = tree.subtree_end[child])
+      walk(child, transform, now_hidden, false, depth);
   }
-  if (!stack.empty()) reader.fail(stack.back().line, "<" + stack.back().name + "> is never closed");
-  if (!seen_root) reader.fail(reader.line(), "no <svg> element");
+
+  // <use href="#id" x y>: the referenced element drawn translated by (x, y).
+  void draw_use(const Tag& tag, const Affine2& transform, int depth) {
+    auto it = tag.attributes.find("href");
+    if (it == tag.attributes.end()) it = tag.attributes.find("xlink:href");
+    if (it == tag.attributes.end()) return;
+    if (it->second.empty() || it->second[0] != '#') reader.fail(tag.line, "<use> refers to \"" + it->second + "\", not to #id");
+    const auto target = tree.ids.find(it->second.substr(1));
+    if (target == tree.ids.end()) reader.fail(tag.line, "<use> refers to the unknown id \"" + it->second.substr(1) + "\"");
+    if (depth >= 32) reader.fail(tag.line, "<use> references nest too deep (a cycle?)");
+    Affine2 shift;
+    shift.offset = Vec2(attribute_number(tag, "x", 0, reader), attribute_number(tag, "y", 0, reader));
+    walk(target->second, transform.then_after(shift), false, true, depth + 1);
+  }
+};
+
+}  // namespace
+
+SvgDrawing parse_svg(std::string_view text, const std::string& source, const SvgReadOptions& options) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  XmlReader reader(text, source);
+  const TagTree tree = read_tag_tree(reader);
+  SvgDrawing drawing;
+  const Tag& root = tree.tags.front();
+  double width = attribute_number(root, "width", 0, reader), height = attribute_number(root, "height", 0, reader);
+  if (const auto it = root.attributes.find("viewBox"); it != root.attributes.end()) {
+    std::vector<double> box;
+    try {
+      box = read_number_list(it->second, "viewBox");
+    } catch (const InputError& e) {
+      reader.fail(root.line, e.what());
+    }
+    if (box.size() != 4 || box[2] < 0 || box[3] < 0) reader.fail(root.line, "viewBox needs four numbers with a non-negative size");
+    width = box[2];
+    height = box[3];
+  }
+  drawing.width = width;
+  drawing.height = height;
+  TreeWalk{tree, reader, source, options, drawing}.walk(0, Affine2{}, false, false, 0);
   return drawing;
 }
 

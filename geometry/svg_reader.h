@@ -59,7 +59,8 @@ std::vector<std::vector<Vec2>> flatten_svg_path_data(std::string_view data, cons
 
 /// Parses SVG text. `source` names the input in errors, which read "source:line: problem"
 /// (InputError): malformed XML, unbalanced tags, bad numbers, path data or transforms.
-/// Elements inside defs, symbol, clipPath, mask, pattern, marker and text are not drawn.
+/// Elements inside defs, symbol, clipPath, mask, pattern, marker and text are not drawn unless a
+/// <use href="#id" x y> (or xlink:href) draws them; unknown ids and cyclic references are errors.
 SvgDrawing parse_svg(std::string_view text, const std::string& source, const SvgReadOptions& options = {});
 
 /// Reads and parses an SVG file; InputError "path: cannot read" when it cannot be read.

@@ -204,3 +204,20 @@ TEST_CASE("svg: corpus file reads one element per line", "[geometry][svg]") {
   CHECK(near(d.elements[0].polylines[0][0], 141.746, 360.18));
   CHECK(d.elements[0].polylines[0].size() > 10);
 }
+
+TEST_CASE("svg: use references elements in defs and symbols", "[geometry][svg]") {
+  const SvgDrawing d = svg(
+      "<defs><path id=\"seg\" d=\"M 0 0 L 1 0\"/></defs>\n"
+      "<symbol id=\"sym\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"2\"/></symbol>\n"
+      "<use href=\"#seg\" x=\"10\" y=\"5\"/>\n"
+      "<g transform=\"scale(2)\"><use xlink:href=\"#seg\" transform=\"translate(1 1)\"/></g>\n"
+      "<use href=\"#sym\" x=\"3\"/>");
+  REQUIRE(d.elements.size() == 3);
+  CHECK(near(d.elements[0].polylines[0][0], 10, 5));
+  CHECK(near(d.elements[0].polylines[0][1], 11, 5));
+  CHECK(near(d.elements[1].polylines[0][0], 2, 2));
+  CHECK(near(d.elements[1].polylines[0][1], 4, 2));
+  CHECK(near(d.elements[2].polylines[0][1], 3, 2));
+  CHECK(error_of("<svg>\n<use href=\"#nope\"/>\n</svg>") == "bad.svg:2: <use> refers to the unknown id \"nope\"");
+  CHECK(error_of("<svg>\n<g id=\"a\"><use href=\"#a\"/></g>\n</svg>") == "bad.svg:2: <use> references nest too deep (a cycle?)");
+}
