@@ -1,10 +1,10 @@
 #include "symmetry/candidates.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <unordered_map>
 
@@ -220,37 +220,65 @@ std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, c
   std::vector<std::uint32_t> sources;
   for (std::size_t i = 0; i < keypoints.size(); i += stride) sources.push_back(static_cast<std::uint32_t>(i));
 
-  // Frame-to-frame motions for every compatible (source, target) pair, voted on two shifted grids.
+  // Frame-to-frame motions for compatible (source, target) pairs, voted on two shifted grids.
+  // Votes keep only the pair; the motion is recomputed when a peak is averaged. When the pairs
+  // would exceed the budget, fewer sources are used (evenly spread over the keypoints).
+  std::vector<std::size_t> compatible_counts(sources.size(), 0);
+  tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t s) {
+    for (const Keypoint& b : keypoints)
+      compatible_counts[s] += compatible(keypoints[sources[s]].descriptor, b.descriptor, options.dihedral_tolerance_degrees) ? 1 : 0;
+  });
+  std::size_t total_pairs = 0;
+  for (std::size_t c : compatible_counts) total_pairs += c;
+  if (total_pairs > options.max_pairs) {
+    const std::size_t keep = std::max<std::size_t>(1, sources.size() * options.max_pairs / total_pairs);
+    std::vector<std::uint32_t> fewer;
+    for (std::size_t i = 0; i < keep; ++i) fewer.push_back(sources[i * sources.size() / keep]);
+    sources = std::move(fewer);
+  }
+  auto pair_motion = [&](std::uint32_t source, std::uint32_t target) {
+    const Keypoint& a = keypoints[source];
+    const Keypoint& b = keypoints[target];
+    RigidTransform t;
+    t.rotation = frame_matrix(b.tangent, b.normal, b.binormal) * frame_matrix(a.tangent, a.normal, a.binormal).transpose();
+    t.translation = b.position - t.rotation * a.position;
+    return t;
+  };
   const double translation_bin = options.translation_bin_eps * eps;
-  std::vector<std::vector<std::pair<VoteKey, RigidTransform>>> per_source(sources.size());
+  struct Vote {
+    VoteKey key;
+    std::uint32_t source, target;
+    bool operator<(const Vote& other) const {
+      return std::tie(key, source, target) < std::tie(other.key, other.source, other.target);
+    }
+  };
+  std::vector<std::vector<Vote>> per_source(sources.size());
   tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t s) {
     const Keypoint& a = keypoints[sources[s]];
-    const Mat3 from = frame_matrix(a.tangent, a.normal, a.binormal);
     for (std::uint32_t j = 0; j < keypoints.size(); ++j) {
-      if (j == sources[s]) continue;
-      const Keypoint& b = keypoints[j];
-      if (!compatible(a.descriptor, b.descriptor, options.dihedral_tolerance_degrees)) continue;
-      const Mat3 to = frame_matrix(b.tangent, b.normal, b.binormal);
-      RigidTransform t;
-      t.rotation = to * from.transpose();
-      t.translation = b.position - t.rotation * a.position;
+      if (j == sources[s] || !compatible(a.descriptor, keypoints[j].descriptor, options.dihedral_tolerance_degrees)) continue;
+      const RigidTransform t = pair_motion(sources[s], j);
       if ((t.apply(centre) - centre).norm() < 0.5 * eps && t.angle() < options.angle_bin_radians) continue;  // identity
       for (double shift : {0.0, 0.5})
-        per_source[s].emplace_back(vote_key(t, centre, options.angle_bin_radians, translation_bin, shift), t);
+        per_source[s].push_back({vote_key(t, centre, options.angle_bin_radians, translation_bin, shift), sources[s], j});
     }
   });
-  std::map<VoteKey, std::vector<const RigidTransform*>> bins;
-  for (const auto& votes : per_source)
-    for (const auto& [key, t] : votes) {
-      bins[key].push_back(&t);
-      ++local.pair_transforms;
-    }
-  local.pair_transforms /= 2;
+  std::vector<Vote> votes;
+  for (auto& v : per_source) {
+    votes.insert(votes.end(), v.begin(), v.end());
+    std::vector<Vote>().swap(v);
+  }
+  local.pair_transforms = votes.size() / 2;
+  tbb::parallel_sort(votes.begin(), votes.end());
 
-  // Peaks: bins with enough votes, largest first (ties by key: deterministic).
-  std::vector<std::pair<std::size_t, const std::vector<const RigidTransform*>*>> peaks;
-  for (const auto& [key, members] : bins)
-    if (members.size() >= options.min_support) peaks.emplace_back(members.size(), &members);
+  // Peaks: runs of equal keys with enough votes, largest first (ties by key: deterministic).
+  std::vector<std::pair<std::size_t, std::size_t>> peaks;  // (size, first vote)
+  for (std::size_t i = 0; i < votes.size();) {
+    std::size_t j = i;
+    while (j < votes.size() && votes[j].key == votes[i].key) ++j;
+    if (j - i >= options.min_support) peaks.emplace_back(j - i, i);
+    i = j;
+  }
   std::stable_sort(peaks.begin(), peaks.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
   const std::size_t max_peaks = 400;
   if (peaks.size() > max_peaks) peaks.resize(max_peaks);
@@ -259,10 +287,11 @@ std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, c
   const KeypointGrid grid(keypoints, eps);
   std::vector<Candidate> refined(peaks.size());
   tbb::parallel_for(std::size_t(0), peaks.size(), [&](std::size_t p) {
-    // Mean of the bin's members (rotation averaged through the matrix, re-orthonormalized).
+    // Mean of the bin's motions (rotation averaged through the matrix, re-orthonormalized).
     Mat4 sum = Mat4::Zero();
-    for (const RigidTransform* t : *peaks[p].second) sum += t->matrix();
-    const RigidTransform mean = rigid_from_matrix(sum / static_cast<double>(peaks[p].second->size()));
+    for (std::size_t v = peaks[p].second; v < peaks[p].second + peaks[p].first; ++v)
+      sum += pair_motion(votes[v].source, votes[v].target).matrix();
+    const RigidTransform mean = rigid_from_matrix(sum / static_cast<double>(peaks[p].first));
     refined[p] = refine(mean, keypoints, grid, eps, options.dihedral_tolerance_degrees);
   });
 

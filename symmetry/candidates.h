@@ -24,6 +24,7 @@ struct CandidateOptions {
   double eps = 0.0;                     ///< voxel size, model units (required)
   double dihedral_tolerance_degrees = 5.0;
   std::size_t max_sources = 600;        ///< keypoints used as sources (evenly strided)
+  std::size_t max_pairs = 3'000'000;    ///< budget of voted pairs; fewer sources are used beyond it
   std::size_t min_support = 3;          ///< matched keypoint pairs a candidate needs after refinement
   double angle_bin_radians = 0.035;     ///< voting bin for the rotation vector
   double translation_bin_eps = 2.0;     ///< voting bin for the centre's displacement, in eps

@@ -26,7 +26,12 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
 
   auto start = std::chrono::steady_clock::now();
   report_progress(progress, "symmetry candidates", 0.0);
-  const std::vector<Keypoint> keypoints = feature_keypoints(prepared.feature_lines);
+  std::vector<Keypoint> keypoints = feature_keypoints(prepared.feature_lines);
+  if (keypoints.size() > options.max_keypoints) {  // evenly thinned: voting and ICP scale with their number
+    std::vector<Keypoint> thinned;
+    for (std::size_t i = 0; i < options.max_keypoints; ++i) thinned.push_back(keypoints[i * keypoints.size() / options.max_keypoints]);
+    keypoints = std::move(thinned);
+  }
   CandidateOptions candidate_options = options.candidates;
   candidate_options.eps = eps;
   CandidateStats candidate_stats;
@@ -113,6 +118,9 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
       if (known) continue;
       const Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
       if (probe.matches.size() < candidate_options.min_support) break;
+      bool refined_known = false;  // ICP may settle on a motion that is already listed
+      for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform);
+      if (refined_known) continue;
       std::optional<DetectedSymmetry> found = evaluate(probe, result.stats);
       if (!found) break;
       result.symmetries.push_back(std::move(*found));

@@ -19,6 +19,7 @@ struct SymmetryOptions {
   double min_r_symmetric_fraction = 0.005;   ///< smaller r-symmetric areas are dropped
   std::size_t max_seeds = 64;                ///< seed cells per candidate for region growing
   int max_power = 64;                        ///< highest generator power probed for families
+  std::size_t max_keypoints = 20000;         ///< feature-line ends used (evenly thinned beyond)
 };
 
 struct DetectedSymmetry {
