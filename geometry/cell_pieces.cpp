@@ -16,6 +16,14 @@ TriangleMesh cut_into_cells(const TriangleMesh& mesh, const VoxelSurface& surfac
       const auto [a, b, c] = mesh.corners(t);
       const ClipPolygon piece = ClipPolygon::triangle(a, b, c).box(lo, hi);
       if (piece.size < 3 || piece.area() <= 0.0) continue;
+      // A piece lying in the voxel's lower face also lies in the neighbour's upper face: keep
+      // only that copy, so each piece of surface appears once.
+      bool on_lower_face = false;
+      for (int axis = 0; axis < 3 && !on_lower_face; ++axis) {
+        on_lower_face = true;
+        for (int n = 0; n < piece.size; ++n) on_lower_face = on_lower_face && piece.points[n][axis] == lo[axis];
+      }
+      if (on_lower_face) continue;
       const auto first = static_cast<std::uint32_t>(pieces.positions.size());
       for (int n = 0; n < piece.size; ++n) pieces.positions.push_back(piece.points[n]);
       for (int n = 1; n + 1 < piece.size; ++n) {
