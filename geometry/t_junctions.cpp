@@ -5,25 +5,28 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 namespace dg {
 namespace {
 
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
 
-// Boundary edges (used by one triangle) with the triangle and the corner where the edge starts.
-std::map<EdgeKey, std::pair<std::size_t, int>> boundary_edges(const TriangleMesh& mesh) {
-  std::map<EdgeKey, std::pair<std::size_t, int>> uses;
-  std::map<EdgeKey, int> count;
+// Boundary edges (used by one triangle) with the triangle and the corner where the edge starts,
+// sorted by edge.
+std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> boundary_edges(const TriangleMesh& mesh) {
+  std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> uses;
+  uses.reserve(3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const EdgeKey key = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
-      ++count[key];
-      uses[key] = {t, k};
-    }
-  for (auto it = uses.begin(); it != uses.end();) it = count[it->first] == 1 ? std::next(it) : uses.erase(it);
-  return uses;
+    for (int k = 0; k < 3; ++k) uses.push_back({std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), {t, k}});
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> single;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    if (j - i == 1) single.push_back(uses[i]);
+    i = j;
+  }
+  return single;
 }
 
 }  // namespace
@@ -34,8 +37,11 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance) {
   for (int pass = 0; pass < 4; ++pass) {
     const auto edges = boundary_edges(mesh);
     if (edges.empty()) break;
-    // Boundary vertices in a spatial hash.
-    const double cell = std::max(tolerance * 16.0, 1e-300);
+    // Boundary vertices in a spatial hash with cells about as long as a boundary edge.
+    double edge_length = 0.0;
+    for (const auto& [edge, use] : edges) edge_length += (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
+    edge_length /= static_cast<double>(edges.size());
+    const double cell = std::max({tolerance * 16.0, edge_length, 1e-300});
     auto key = [&](const Vec3& p) {
       return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / cell)),
                                          static_cast<std::int64_t>(std::floor(p.y() / cell)),
@@ -61,7 +67,7 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance) {
       // Vertices on the open segment, ordered from a to b.
       std::vector<std::pair<double, std::uint32_t>> inner;
       const auto lo = key(pa.cwiseMin(pb) - Vec3::Constant(tolerance)), hi = key(pa.cwiseMax(pb) + Vec3::Constant(tolerance));
-      if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 4096) {
+      if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 512) {
         // Long edge: scan all boundary vertices instead of many empty cells.
         for (const auto& [cell_key, vertices] : buckets)
           for (std::uint32_t v : vertices) {
