@@ -8,7 +8,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <filesystem>
+#include <sys/wait.h>
 #include <fstream>
 #include <iterator>
 
@@ -113,5 +115,28 @@ TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") 
   }
   std::filesystem::remove(folder / "fence.grammar.pieces" / "exemplar.ply");
   CHECK_THROWS_AS(dg::read_grammar(path), dg::InputError);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("resize CLI: unknown grid or count out of range exits 2 and writes nothing", "[synthesis][grid]") {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-resize-cli-test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string cli = DOCKGRAMMAR_CLI;
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
+  REQUIRE(std::system((cli + " analyze " + model + " -q -o " + folder.string() + " > /dev/null").c_str()) == 0);
+  const std::string grammar = (folder / "fence_4.grammar.json").string();
+  const std::string out = (folder / "out.obj").string();
+  auto status_of = [&](const std::string& arguments) {
+    const int status = std::system((cli + " resize " + grammar + " " + arguments + " -o " + out + " 2> /dev/null").c_str());
+    return WEXITSTATUS(status);
+  };
+  CHECK(status_of("--grid nosuch=3") == 2);
+  CHECK(status_of("--grid grid1=-2") == 2);
+  CHECK(status_of("--grid grid1=3x3") == 2);
+  CHECK(status_of("--grid grid1=abc") == 2);
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(status_of("--grid grid1=6") == 0);
+  CHECK(std::filesystem::exists(out));
   std::filesystem::remove_all(folder);
 }
