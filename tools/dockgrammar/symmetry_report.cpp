@@ -15,7 +15,13 @@ namespace {
 
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
-std::string vec(const Vec3& v) { return fmt::format("({:.5g}, {:.5g}, {:.5g})", v.x(), v.y(), v.z()); }
+// Components printed with 5 significant digits; rounding noise (below 1e-9 of the vector's
+// length) and -0 show as 0.
+std::string vec(const Vec3& v) {
+  const double noise = 1e-9 * v.norm();
+  auto clean = [&](double x) { return std::abs(x) <= noise ? 0.0 : x; };
+  return fmt::format("({:.5g}, {:.5g}, {:.5g})", clean(v.x()), clean(v.y()), clean(v.z()));
+}
 
 std::string describe_motion(const RigidTransform& t, const std::string& kind) {
   if (kind == "translation") return fmt::format("t = {}, |t| = {:.6g}", vec(t.translation), t.translation.norm());
@@ -45,8 +51,11 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
                        fmt::format("{:.4g} ({:.1f}%)", s.r_symmetric_area, 100.0 * s.r_symmetric_fraction),
                        fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(s.transform, s.kind));
   }
-  out += "\nfamilies (generator, repeats found):\n";
+  out += "\nfamilies of the symmetries above (generator, repeats found):\n";
+  std::vector<bool> shown(result.families.size(), false);
+  for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) shown[result.symmetries[i].family] = true;
   for (std::size_t f = 0; f < result.families.size(); ++f) {
+    if (!shown[f]) continue;
     const SymmetryFamily& family = result.families[f];
     out += fmt::format("  F{:<3} {:<11} x{:<3}{}  {}\n", f + 1, family.kind, family.count,
                        family.order > 0 ? fmt::format(" (order {})", family.order) : std::string(),
