@@ -9,6 +9,7 @@
 #include <numbers>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace dg {
@@ -66,11 +67,19 @@ std::string join(std::initializer_list<std::string> parts) {
   return text;
 }
 
+// `[text]`.
+std::string bracketed(const std::string& text) {
+  std::string out(1, '[');
+  out += text;
+  out += ']';
+  return out;
+}
+
 // How a node of `type` is written inside a successor: terminals as they are, rule instances in
 // brackets because they move the turtle.
-std::string placed(const std::string& type, bool last) {
-  const bool terminal = type.find('(') == std::string::npos;
-  return terminal || last ? type : "[" + type + "]";
+std::string placed(const std::string& type, bool last, const std::set<std::string>& pair_types) {
+  const bool terminal = type.find('(') == std::string::npos && !pair_types.count(type);
+  return terminal || last ? type : bracketed(type);
 }
 
 std::string path_text(const ElementShape& shape) {
@@ -161,18 +170,23 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   std::vector<std::string> rule_lines;
   std::optional<double> headline_angle, headline_scale;
   int sequences = 0, branchings = 0;
+  std::set<std::string> pair_types;  // names of pair rules, which have no counter
   while (nodes.size() > 1 && static_cast<int>(result.rules) < options.max_rules) {
     const std::vector<RuleCandidate> candidates = find_rule_candidates(nodes, diagonal, options.clusters);
     const auto best = std::find_if(candidates.begin(), candidates.end(), [](const RuleCandidate& c) { return c.absorbed > 0; });
     if (best == candidates.end()) break;
     const RuleCandidate& rule = *best;
-    const std::string name = rule.branching ? "R" + std::to_string(branchings++) : "P" + std::to_string(sequences++);
-    const std::string child = placed(rule.child_type, false);
-    if (rule.branching) {
+    std::string name = rule.pair ? "Q" : rule.branching ? "R" : "P";
+    name.append(std::to_string(rule.pair ? static_cast<int>(pair_types.size()) : rule.branching ? branchings++ : sequences++));
+    const std::string child = placed(rule.child_type, false, pair_types);
+    if (rule.pair) {
+      rule_lines.push_back(name + " -> " + join({child, transform_text(rule.start, {}), placed(rule.second_type, true, pair_types)}));
+      pair_types.insert(name);
+    } else if (rule.branching) {
       rule_lines.push_back(name + "(m) : m>0 -> " +
-                           join({child, "[" + join({transform_text(rule.start, {}), name + "(m-1)"}) + "]",
+                           join({child, bracketed(join({transform_text(rule.start, {}), name + "(m-1)"})),
                                  transform_text(rule.second, {}), name + "(m-1)"}));
-      rule_lines.push_back(name + "(m) : m==0 -> " + placed(rule.child_type, true));
+      rule_lines.push_back(name + "(m) : m==0 -> " + placed(rule.child_type, true, pair_types));
     } else {
       rule_lines.push_back(name + "(m) : m>0 -> " + join({child, transform_text(rule.start, rule.slope), name + "(m-1)"}));
       rule_lines.push_back(name + "(m) : m==0 -> ε");
@@ -190,7 +204,7 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
     for (std::size_t g = 0; g < rule.groups.size(); ++g) {
       const auto& group = rule.groups[g];
       SceneNode node;
-      node.type = name + "(" + std::to_string(rule.counters[g]) + ")";
+      node.type = rule.pair ? name : name + "(" + std::to_string(rule.counters[g]) + ")";
       node.frame = nodes[group.front()].frame;
       node.exit = node.frame;  // rule instances are placed in brackets
       double similarity = 0;
@@ -217,11 +231,11 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   const SceneNode& root = nodes.front();
   std::string axiom;
   if (std::abs(root.frame.scale - 1) >= trivial_scale) axiom = "*(" + number(root.frame.scale, kScaleDecimals) + ")";
-  axiom = join({axiom, placed(root.type, nodes.size() == 1)});
+  axiom = join({axiom, placed(root.type, nodes.size() == 1, pair_types)});
   for (std::size_t i = 1; i < nodes.size(); ++i) {
     const TurtleTransform t = relative_transform(nodes.size() > 1 && root.type.find('(') == std::string::npos ? root.exit : root.frame,
                                                  nodes[i].frame);
-    axiom = join({axiom, "[" + join({transform_text(t, {}), nodes[i].type}) + "]"});
+    axiom = join({axiom, bracketed(join({transform_text(t, {}), nodes[i].type}))});
   }
   std::ostringstream text;
   text << "# inferred from a vector drawing: " << result.elements << " elements, " << result.terminals << " terminals, "
@@ -231,7 +245,7 @@ InferredLSystem infer_lsystem(const SvgDrawing& drawing, const InferenceOptions&
   if (headline_scale) text << "scale: " << format_number(*headline_scale) << "\n";
   if (rounded(root.frame.angle_deg, kAngleDecimals) != 0) text << "heading: " << number(root.frame.angle_deg, kAngleDecimals) << "\n";
   for (const Terminal& terminal : terminals.terminals) {
-    if (terminal.segment) text << "step: " << format_number(terminal.step) << "\n";
+    if (terminal.segment) text << "step: " << number(terminal.step, 4) << "\n";
     else text << "motif " << terminal.symbol << ": " << path_text(terminal.motif) << "\n";
   }
   for (const std::string& line : rule_lines) text << line << "\n";

@@ -45,10 +45,13 @@ struct ClusterOptions {
   int max_branch_clusters = 8;          ///< largest clusters per type tried as branch pairs
 };
 
-/// A rule the scene could be rewritten with.
+/// A rule the scene could be rewritten with: a sequence `P(m) -> X T(m) P(m-1)`, a branching
+/// `R(m) -> X [T1 R(m-1)] T2 R(m-1)`, or a pair of different types `Q -> X T Y`.
 struct RuleCandidate {
   bool branching = false;
-  std::string child_type;             ///< type of every absorbed element
+  bool pair = false;
+  std::string child_type;             ///< type of every absorbed element (pairs: of the first)
+  std::string second_type;            ///< pairs: type of the second element
   TurtleTransform start{};            ///< sequence: t0 of t(m) = t0 + slope m; branching: first branch
   TurtleTransform slope{};            ///< sequence only
   TurtleTransform second{};           ///< branching: the second branch (constant)
@@ -58,7 +61,7 @@ struct RuleCandidate {
   double score = 0;
 };
 
-/// All candidates for the current scene, best first (ties broken by the transforms, so the
+/// All candidates for the current scene (pairs of different types only when `pairs_of_types`), best first (ties broken by the transforms, so the
 /// order does not depend on the order of the nodes). `diagonal` is the drawing's diagonal.
 std::vector<RuleCandidate> find_rule_candidates(const std::vector<SceneNode>& nodes, double diagonal,
                                                 const ClusterOptions& options);

@@ -194,6 +194,17 @@ TEST_CASE("inference: branching of segments with scale", "[grammar][inference]")
   CHECK(inferred.lsystem.turtle.scale.value_or(0) == Approx(0.7).margin(0.001));
 }
 
+TEST_CASE("inference: two terminals are joined by a pair rule", "[grammar][inference]") {
+  const SvgDrawing input = draw(
+      "axiom: P(10)\nheading: 90\nstep: 20\nP(m) : m>0 -> F [+(40) *(0.8) A] -(5) P(m-1)\nP(m) : m==0 -> ε\n");
+  const InferredLSystem inferred = infer_lsystem(input);
+  INFO(inferred.text);
+  CHECK(inferred.terminals == 2);
+  REQUIRE(inferred.lsystem.axiom.size() == 1);  // everything ends in one element
+  CHECK(inferred.text.find("Q0 -> ") != std::string::npos);
+  CHECK(symmetric_distance(input, inferred) < 0.05);
+}
+
 TEST_CASE("inference: element order and weights", "[grammar][inference]") {
   SvgDrawing input = draw("axiom: P(25)\nP(m) : m>0 -> A f(20) *(0.97) +(10) P(m-1)\nP(m) : m==0 -> ε\n");
   const std::string original = infer_lsystem(input).text;
