@@ -407,55 +407,59 @@ std::vector<RuleCandidate> find_rule_candidates(const std::vector<SceneNode>& no
       for (std::size_t b = a + 1; b < full_space_chains.size(); ++b)
         branching_candidates(pairs, full_space_chains[a], full_space_chains[b], type, all);
   }
-  // Pairs of elements of different types (rule r1 with A != B and m = 1, folded to Q -> A T B).
-  for (const auto& [first_type, firsts] : by_type)
-    for (const auto& [second_type, seconds] : by_type) {
-      if (first_type == second_type) continue;
-      std::vector<Pair> pairs;
-      std::vector<std::pair<double, std::size_t>> distances;
-      for (std::size_t i : firsts) {
-        distances.clear();
-        for (std::size_t j : seconds) distances.emplace_back((nodes[j].frame.position - nodes[i].exit.position).squaredNorm(), j);
-        const std::size_t take = std::min<std::size_t>(static_cast<std::size_t>(std::max(options.neighbours, 1)), distances.size());
-        std::partial_sort(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(take), distances.end());
-        for (std::size_t n = 0; n < take; ++n) {
-          const std::size_t j = distances[n].second;
-          pairs.push_back(Pair{i, j, relative_transform(nodes[i].exit, nodes[j].frame), std::sqrt(distances[n].first)});
-        }
-      }
-      std::vector<ShiftPoint> points;
-      for (const Pair& p : pairs) points.push_back(full_space_point(p.t, diagonal, options));
-      const ShiftClusters clusters = mean_shift(points, 4, {period, 0, 0, period});
-      std::vector<std::vector<std::size_t>> members_of(clusters.centers.size());
-      for (std::size_t p = 0; p < pairs.size(); ++p)
-        if (clusters.labels[p] >= 0) members_of[static_cast<std::size_t>(clusters.labels[p])].push_back(p);
-      for (auto& cluster : members_of) {
-        std::sort(cluster.begin(), cluster.end(), [&](std::size_t a, std::size_t b) {
-          if (pairs[a].world_distance != pairs[b].world_distance) return pairs[a].world_distance < pairs[b].world_distance;
-          return std::pair{pairs[a].from, pairs[a].to} < std::pair{pairs[b].from, pairs[b].to};
-        });
-        Scored s;
-        RuleCandidate& c = s.candidate;
-        c.pair = true;
-        c.child_type = first_type;
-        c.second_type = second_type;
-        std::set<std::size_t> used;
-        TurtleTransform sum{};
-        const TurtleTransform reference = pairs[cluster.front()].t;
-        for (std::size_t p : cluster) {
-          if (used.count(pairs[p].from) || used.count(pairs[p].to)) continue;
-          used.insert(pairs[p].from);
-          used.insert(pairs[p].to);
-          c.groups.push_back({pairs[p].from, pairs[p].to});
-          c.counters.push_back(1);
-          s.links.emplace_back(pairs[p].from, pairs[p].to);
-          for (int k = 0; k < 4; ++k) sum[k] += is_angle(k) ? reference[k] + wrap_degrees(pairs[p].t[k] - reference[k]) : pairs[p].t[k];
-        }
-        c.absorbed = c.groups.size();
-        for (int k = 0; k < 4; ++k) c.start[k] = is_angle(k) ? wrap_degrees(sum[k] / static_cast<double>(c.groups.size())) : sum[k] / static_cast<double>(c.groups.size());
-        all.push_back(std::move(s));
+  // Pairs of elements of different types (rule r1 with A != B and m = 1, folded to Q -> A T B):
+  // each element with its nearest elements of other types, grouped by the two types.
+  std::map<std::pair<std::string, std::string>, std::vector<Pair>> cross;
+  {
+    std::vector<std::pair<double, std::size_t>> distances;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      distances.clear();
+      for (std::size_t j = 0; j < nodes.size(); ++j)
+        if (nodes[j].type != nodes[i].type) distances.emplace_back((nodes[j].frame.position - nodes[i].exit.position).squaredNorm(), j);
+      const std::size_t take = std::min<std::size_t>(static_cast<std::size_t>(std::max(options.neighbours, 1)), distances.size());
+      std::partial_sort(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(take), distances.end());
+      for (std::size_t n = 0; n < take; ++n) {
+        const std::size_t j = distances[n].second;
+        cross[{nodes[i].type, nodes[j].type}].push_back(
+            Pair{i, j, relative_transform(nodes[i].exit, nodes[j].frame), std::sqrt(distances[n].first)});
       }
     }
+  }
+  for (const auto& [types, pairs] : cross) {
+    const auto& [first_type, second_type] = types;
+    std::vector<ShiftPoint> points;
+    for (const Pair& p : pairs) points.push_back(full_space_point(p.t, diagonal, options));
+    const ShiftClusters clusters = mean_shift(points, 4, {period, 0, 0, period});
+    std::vector<std::vector<std::size_t>> members_of(clusters.centers.size());
+    for (std::size_t p = 0; p < pairs.size(); ++p)
+      if (clusters.labels[p] >= 0) members_of[static_cast<std::size_t>(clusters.labels[p])].push_back(p);
+    for (auto& cluster : members_of) {
+      std::sort(cluster.begin(), cluster.end(), [&](std::size_t a, std::size_t b) {
+        if (pairs[a].world_distance != pairs[b].world_distance) return pairs[a].world_distance < pairs[b].world_distance;
+        return std::pair{pairs[a].from, pairs[a].to} < std::pair{pairs[b].from, pairs[b].to};
+      });
+      Scored s;
+      RuleCandidate& c = s.candidate;
+      c.pair = true;
+      c.child_type = first_type;
+      c.second_type = second_type;
+      std::set<std::size_t> used;
+      TurtleTransform sum{};
+      const TurtleTransform reference = pairs[cluster.front()].t;
+      for (std::size_t p : cluster) {
+        if (used.count(pairs[p].from) || used.count(pairs[p].to)) continue;
+        used.insert(pairs[p].from);
+        used.insert(pairs[p].to);
+        c.groups.push_back({pairs[p].from, pairs[p].to});
+        c.counters.push_back(1);
+        s.links.emplace_back(pairs[p].from, pairs[p].to);
+        for (int k = 0; k < 4; ++k) sum[k] += is_angle(k) ? reference[k] + wrap_degrees(pairs[p].t[k] - reference[k]) : pairs[p].t[k];
+      }
+      c.absorbed = c.groups.size();
+      for (int k = 0; k < 4; ++k) c.start[k] = is_angle(k) ? wrap_degrees(sum[k] / static_cast<double>(c.groups.size())) : sum[k] / static_cast<double>(c.groups.size());
+      all.push_back(std::move(s));
+    }
+  }
   score(all, nodes, diagonal, options.weights);
   std::sort(all.begin(), all.end(), [](const Scored& x, const Scored& y) {
     const RuleCandidate &a = x.candidate, &b = y.candidate;
