@@ -6,7 +6,8 @@
 namespace dg {
 
 /// True when triangle (a, b, c) and the CLOSED box [lo, hi] share at least one point
-/// (touching at an edge or corner counts). Separating-axis test over the 13 axes
+/// (touching at an edge or corner counts, up to a margin of 1e-10 of the coordinates' size that
+/// absorbs rounding). Separating-axis test over the 13 axes
 /// (3 box normals, the triangle normal, 9 edge cross products). A segment [a, b] is tested
 /// exactly as the degenerate triangle (a, b, b): its zero normal never separates and the
 /// remaining axes are the complete set for a segment.

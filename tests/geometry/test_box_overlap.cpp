@@ -31,3 +31,11 @@ TEST_CASE("segment-box overlap through degenerate triangles", "[geometry]") {
   // Segment ending exactly on a face.
   CHECK(dg::triangle_box_overlap({2, 0.5, 0.5}, {1, 0.5, 0.5}, {1, 0.5, 0.5}, lo, hi));
 }
+
+TEST_CASE("a face on a voxel plane at a rounded coordinate touches both voxels", "[geometry]") {
+  // x = 3.1 with eps = 0.1: 31 * 0.1 is not exactly 3.1 in binary; the face must still touch.
+  const double eps = 0.1;
+  const dg::Vec3 a(3.1, 0.31, 0.52), b(3.1, 0.77, 0.52), c(3.1, 0.31, 0.93);
+  for (int i : {30, 31})
+    CHECK(dg::triangle_box_overlap(a, b, c, dg::Vec3(i * eps, 3 * eps, 5 * eps), dg::Vec3((i + 1) * eps, 4 * eps, 6 * eps)));
+}
