@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace dg::cli {
 namespace {
 
@@ -21,7 +23,12 @@ std::string counts_text(const GridRule& grid) {
   return text;
 }
 
-std::string vec(const Vec3& v) { return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z()); }
+// Components with 6 significant digits; rounding noise (below 1e-9 of the length) and -0 show as 0.
+std::string vec(const Vec3& v) {
+  const double noise = 1e-9 * v.norm();
+  auto clean = [&](double x) { return std::abs(x) <= noise ? 0.0 : x; };
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", clean(v.x()), clean(v.y()), clean(v.z()));
+}
 
 nlohmann::json timings_json(const AnalysisReport& report) {
   nlohmann::json timings = nlohmann::json::object();
