@@ -2,25 +2,12 @@
 
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/stopwatch.h"
 
-#include <chrono>
 #include <cmath>
 
 namespace dg {
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    start_ = now;
-    return seconds;
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 void check_option(double value, const char* name) {
   if (!std::isfinite(value) || value < 0.0)

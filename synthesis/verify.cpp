@@ -6,30 +6,17 @@
 #include "geometry/feature_lines.h"
 #include "geometry/model_io.h"
 #include "geometry/self_intersections.h"
+#include "geometry/stopwatch.h"
 #include "geometry/voxel_surface.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace dg {
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    start_ = now;
-    return seconds;
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 // A welded, cleaned mesh with its cleaning report and feature lines.
 struct CleanModel {
