@@ -79,6 +79,11 @@ RigidTransform fit_rigid_transform(const std::vector<Vec3>& from, const std::vec
   return result;
 }
 
+bool same_motion(const RigidTransform& a, const RigidTransform& b, const Vec3& point, double distance, double angle) {
+  return (a.apply(point) - b.apply(point)).norm() < distance &&
+         RigidTransform{a.rotation.transpose() * b.rotation, Vec3::Zero()}.angle() < angle;
+}
+
 RigidTransform rigid_from_matrix(const Mat4& matrix) {
   const Mat3 linear = matrix.topLeftCorner<3, 3>();
   const Eigen::JacobiSVD<Mat3> svd(linear, Eigen::ComputeFullU | Eigen::ComputeFullV);

@@ -50,6 +50,10 @@ std::string motion_kind(const RigidTransform& transform, double angle_tolerance,
 /// fewer the result is still a proper motion that fits them.
 RigidTransform fit_rigid_transform(const std::vector<Vec3>& from, const std::vector<Vec3>& to);
 
+/// True when a and b move `point` to within `distance` (model units) of each other and their
+/// rotations differ by less than `angle` radians (default about half a degree).
+bool same_motion(const RigidTransform& a, const RigidTransform& b, const Vec3& point, double distance, double angle = 0.01);
+
 /// Rigid motion from a 4x4 matrix (the upper-left 3x3 is re-orthonormalized).
 RigidTransform rigid_from_matrix(const Mat4& matrix);
 

@@ -188,20 +188,30 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   return grids;
 }
 
-std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
-  TriangleMesh cut = mesh;
+GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  GridCut result{mesh, {}};
   std::vector<std::vector<double>> planes;
   for (const GridDirection& direction : grid.directions) {
     std::vector<double> offsets;
     for (int j = 0; j <= direction.count; ++j) offsets.push_back(direction.cut + j * direction.pitch);
-    cut = cut_along_planes(cut, direction.direction, offsets, 1e-6 * eps);
+    result.mesh = cut_along_planes(result.mesh, direction.direction, offsets, 1e-6 * eps);
     planes.push_back(std::move(offsets));
   }
+  result.slabs.resize(result.mesh.triangles.size());
+  for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t)
+    for (std::size_t i = 0; i < grid.directions.size(); ++i)
+      result.slabs[t].push_back(slab_of(result.mesh, t, grid.directions[i].direction, planes[i]));
+  return result;
+}
+
+std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  const GridCut grid_cut = cut_along_grid(mesh, grid, eps);
+  const TriangleMesh& cut = grid_cut.mesh;
   std::map<std::vector<int>, TriangleMesh> by_class;
   for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
     std::vector<int> classes;
     for (std::size_t i = 0; i < grid.directions.size(); ++i) {
-      const int c = slab_class(slab_of(cut, t, grid.directions[i].direction, planes[i]), grid.directions[i].count);
+      const int c = slab_class(grid_cut.slabs[t][i], grid.directions[i].count);
       if (c < 0) break;
       classes.push_back(c);
     }

@@ -52,6 +52,18 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
 /// not stored).
 int slab_class(std::size_t slab, int count);
 
+/// The mesh cut along every plane of a grid, with each triangle's slab along each direction:
+/// slabs[t][i] is 0 before the first plane of direction i, k after plane k-1 (k = 1 .. count
+/// are the units), count + 1 after the last plane (the tail).
+struct GridCut {
+  TriangleMesh mesh;
+  std::vector<std::vector<std::size_t>> slabs;
+};
+
+/// Cuts `mesh` along the planes of every direction of `grid` (vertices within 1e-6 eps of a
+/// plane are moved onto it).
+GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps);
+
 /// A piece of a grid: the triangles whose slab classes along the directions are `classes`.
 struct GridPiece {
   std::vector<int> classes;  ///< one of 0 (head), 1 (unit), 2 (tail) per direction

@@ -130,12 +130,6 @@ Candidate refine(RigidTransform t, const std::vector<Keypoint>& keypoints, const
   return candidate;
 }
 
-// Two motions are the same candidate when they move the centre to within eps and their
-// rotations differ by less than about half a degree.
-bool same_motion(const RigidTransform& a, const RigidTransform& b, const Vec3& centre, double eps) {
-  return (a.apply(centre) - b.apply(centre)).norm() < eps &&
-         RigidTransform{a.rotation.transpose() * b.rotation, Vec3::Zero()}.angle() < 0.01;
-}
 
 // Puts a candidate's motion into canonical form, swapping its matches when it is inverted.
 void make_canonical(Candidate& c, double slide_tolerance) {

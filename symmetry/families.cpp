@@ -12,11 +12,8 @@ namespace {
 int power_of(const RigidTransform& generator, const RigidTransform& member, const Vec3& centre, double eps, int max_power) {
   RigidTransform power = generator;
   for (int k = 1; k <= max_power; ++k) {
-    for (const RigidTransform& candidate : {power, power.inverse()}) {
-      const double rotation_difference =
-          RigidTransform{candidate.rotation.transpose() * member.rotation, Vec3::Zero()}.angle();
-      if ((candidate.apply(centre) - member.apply(centre)).norm() < eps && rotation_difference < 0.01) return k;
-    }
+    for (const RigidTransform& candidate : {power, power.inverse()})
+      if (same_motion(candidate, member, centre, eps)) return k;
     power = generator.after(power);
   }
   return 0;

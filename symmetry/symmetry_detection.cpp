@@ -101,25 +101,21 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   }
 
   // Repetition families: probe the powers of each small motion that voting did not propose.
-  const auto same_motion = [&](const RigidTransform& a, const RigidTransform& b) {
-    return (a.apply(centre) - b.apply(centre)).norm() < eps &&
-           RigidTransform{a.rotation.transpose() * b.rotation, Vec3::Zero()}.angle() < 0.01;
-  };
   const std::size_t proposed = result.symmetries.size();
   for (std::size_t g = 0; g < proposed; ++g) {
     const RigidTransform generator = result.symmetries[g].transform;
     RigidTransform power = generator;
     for (int k = 2; k <= options.max_power; ++k) {
       power = generator.after(power);
-      if ((power.apply(centre) - centre).norm() < eps && power.angle() < 0.01) break;  // back to the identity
+      if (same_motion(power, RigidTransform{}, centre, eps)) break;  // back to the identity
       const RigidTransform canonical = canonical_motion(power, 0.5 * eps);
       bool known = false;
-      for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical);
+      for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical, centre, eps);
       if (known) continue;
       const Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
       if (probe.matches.size() < candidate_options.min_support) break;
       bool refined_known = false;  // ICP may settle on a motion that is already listed
-      for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform);
+      for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform, centre, eps);
       if (refined_known) continue;
       std::optional<DetectedSymmetry> found = evaluate(probe, result.stats);
       if (!found) break;

@@ -2,7 +2,6 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
-#include "geometry/slab_cut.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
@@ -126,24 +125,19 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
 void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report) {
   const TriangleMesh& mesh = report.prepared.model.mesh;
   for (const GridWithPieces& grid : report.grammar.grids) {
-    TriangleMesh cut = mesh;
-    std::vector<std::vector<double>> planes;
-    for (const GridDirection& d : grid.rule.directions) {
-      std::vector<double> offsets;
-      for (int j = 0; j <= d.count; ++j) offsets.push_back(d.cut + j * d.pitch);
-      cut = cut_along_planes(cut, d.direction, offsets, 1e-6 * report.grammar.eps);
-      planes.push_back(std::move(offsets));
-    }
+    const GridCut grid_cut = cut_along_grid(mesh, grid.rule, report.grammar.eps);
+    const TriangleMesh& cut = grid_cut.mesh;
     std::vector<Rgba8> colors(cut.triangles.size());
     std::vector<Rgb> vertex_colors(cut.positions.size());
     for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
+      // Class per direction as stored in the grammar; later units (copies) shade like the unit,
+      // alternately darker so the repeats can be counted.
       std::size_t class_index = 0, parity = 0;
       for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-        const std::size_t slab = slab_of(cut, t, grid.rule.directions[i].direction, planes[i]);
-        const int count = grid.rule.directions[i].count;
-        const std::size_t cls = slab == 0 ? 0 : (slab > static_cast<std::size_t>(count) ? 2 : 1);
-        class_index = 3 * class_index + cls;
-        if (cls == 1) parity += slab;
+        const std::size_t slab = grid_cut.slabs[t][i];
+        const int cls = slab_class(slab, grid.rule.directions[i].count);
+        class_index = 3 * class_index + static_cast<std::size_t>(cls < 0 ? 1 : cls);
+        if (cls != 0 && cls != 2) parity += slab;
       }
       Rgba8 color = class_color(class_index);
       if (parity % 2 == 1) color = {static_cast<std::uint8_t>(color.r * 3 / 4), static_cast<std::uint8_t>(color.g * 3 / 4),
