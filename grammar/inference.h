@@ -37,6 +37,8 @@ struct InferredLSystem {
   std::size_t elements = 0;       ///< input elements used (without extent-less ones)
   std::size_t terminals = 0;
   std::size_t rules = 0;          ///< rules created by the hierarchy
+  std::string method = "vector";  ///< "vector" (Št'ava 2010) or "instance tree" (Guo 2020)
+  std::string comparison;         ///< grammar lengths of the methods that were tried, e.g. "instance tree 17, vector 292"
   InferenceTimings timings;
 };
 

@@ -7,7 +7,7 @@
 #include "geometry/errors.h"
 #include "geometry/svg_reader.h"
 #include "grammar/grammar_length.h"
-#include "grammar/inference.h"
+#include "grammar/inference_drawing.h"
 #include "grammar/lsystem_json.h"
 
 #include <fmt/core.h>
@@ -26,7 +26,7 @@ struct InferOptions {
   std::string input;
   std::string output;
   bool json = false;
-  InferenceOptions inference;
+  DrawingInferenceOptions inference;
 };
 
 std::string extension_of(const std::string& path) {
@@ -47,7 +47,7 @@ void run_infer(const InferOptions& options) {
   const SvgDrawing drawing = read_svg(options.input);
   InferredLSystem inferred;
   try {
-    inferred = infer_lsystem(drawing, options.inference);
+    inferred = infer_drawing_lsystem(drawing, options.inference);
   } catch (const InputError& error) {
     throw InputError(options.input + ": " + error.what());
   }
@@ -56,6 +56,8 @@ void run_infer(const InferOptions& options) {
   json["start_svg"] = {inferred.start_svg.x(), inferred.start_svg.y()};
   json["elements"] = inferred.elements;
   json["terminals"] = inferred.terminals;
+  json["method"] = inferred.method;
+  json["comparison"] = inferred.comparison;
   json["timings_s"] = {{"instancing", inferred.timings.instancing_s},
                        {"rules", inferred.timings.rules_s},
                        {"total", inferred.timings.total_s}};
@@ -78,12 +80,12 @@ void add_lsystem_infer_subcommand(CLI::App& lsystem) {
   command->add_option("INPUT", options->input, "vector drawing (.svg)")->required()->check(CLI::ExistingFile);
   command->add_option("-o,--output", options->output, "write the L-system here: OUT.ls (text form) or OUT.json");
   command->add_flag("--json", options->json, "print the JSON form with grammar_length, start_svg and timings_s");
-  ImportanceWeights& w = options->inference.clusters.weights;
+  ImportanceWeights& w = options->inference.vector.clusters.weights;
   command->add_option("--w-n", w.w_n, "importance weight of the number of absorbed elements")->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_option("--w-h", w.w_h, "importance weight of proximity (merge neighbours first)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_option("--w-phi", w.w_phi, "importance weight of element similarity")->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_option("--w-l", w.w_l, "importance weight of sequence length")->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  command->add_option("--similarity", options->inference.similarity.threshold, "element similarity threshold")
+  command->add_option("--similarity", options->inference.vector.similarity.threshold, "element similarity threshold")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   command->callback([options] { run_infer(*options); });

@@ -1,0 +1,136 @@
+#include "grammar/turtle_string.h"
+
+#include "grammar/inference_transform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+namespace dg {
+
+namespace {
+
+double heading_of(const TreeSegment& s) {
+  const Vec2 d = s.end - s.start;
+  return std::atan2(d.y(), d.x()) * 180 / std::numbers::pi;
+}
+
+double length_of(const TreeSegment& s) { return (s.end - s.start).norm(); }
+
+// The unit of which the values are integer multiples: the sorted values are split into
+// clusters where neighbours differ by more than `gap`; the first cluster whose centre is at
+// least `least` and that holds at least 2 % of the values gives a first unit (its median), which
+// is refined by least squares over all values of at least `least` as multiples of it. Nothing
+// when no cluster qualifies.
+std::optional<double> base_unit(const std::vector<double>& sorted, double gap, double least) {
+  std::optional<double> unit;
+  for (std::size_t begin = 0; begin < sorted.size() && !unit;) {
+    std::size_t end = begin + 1;
+    while (end < sorted.size() && sorted[end] - sorted[end - 1] <= gap) ++end;
+    const double median = sorted[(begin + end) / 2];
+    if (median >= least && (end - begin) * 50 >= sorted.size()) unit = median;
+    begin = end;
+  }
+  if (!unit) return std::nullopt;
+  double numerator = 0, denominator = 0;
+  for (double v : sorted) {
+    if (v < least) continue;
+    const double k = std::max(1.0, std::round(v / *unit));
+    numerator += v * k;
+    denominator += k * k;
+  }
+  return numerator / denominator;
+}
+
+}  // namespace
+
+TurtleParameters estimate_turtle_parameters(const InstanceTree& tree) {
+  std::vector<double> turns, shrinks;
+  for (std::size_t p = 0; p < tree.nodes.size(); ++p)
+    for (std::size_t c : tree.children[p]) {
+      const double turn = std::abs(wrap_degrees(heading_of(tree.nodes[c]) - heading_of(tree.nodes[p])));
+      turns.push_back(turn);
+      const double lp = length_of(tree.nodes[p]), lc = length_of(tree.nodes[c]);
+      if (lp <= 0 || lc <= 0) continue;
+      shrinks.push_back(std::abs(std::log(lc / lp)));
+    }
+  TurtleParameters parameters;
+  std::sort(turns.begin(), turns.end());
+  std::sort(shrinks.begin(), shrinks.end());
+  parameters.angle_deg = base_unit(turns, 3.0, 5.0);
+  if (const auto shrink = base_unit(shrinks, 0.03, std::log(1.08))) parameters.scale = std::exp(-*shrink);
+  return parameters;
+}
+
+TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns) {
+  TurtleString result;
+  const std::size_t n = tree.nodes.size();
+  if (n == 0) return result;
+  std::vector<std::size_t> size(n, 1);
+  for (std::size_t v = n; v-- > 0;)
+    for (std::size_t c : tree.children[v]) size[v] += size[c];
+  // Turn steps and scale steps of every node relative to its parent.
+  std::vector<int> turn_steps(n, 0), scale_steps(n, 0), exponent(n, 0);
+  const double delta = parameters.angle_deg.value_or(0);
+  const double log_scale = parameters.scale ? std::log(*parameters.scale) : 0;
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t c : tree.children[p]) {
+      const double turn = wrap_degrees(heading_of(tree.nodes[c]) - heading_of(tree.nodes[p]));
+      const int k = delta > 0 ? static_cast<int>(std::lround(turn / delta)) : 0;
+      turn_steps[c] = k;
+      result.worst_turn_error_deg = std::max(result.worst_turn_error_deg, std::abs(turn - k * delta));
+      const double lp = length_of(tree.nodes[p]), lc = length_of(tree.nodes[c]);
+      int j = 0;
+      if (log_scale != 0 && lp > 0 && lc > 0) j = static_cast<int>(std::lround(std::log(lc / lp) / log_scale));
+      if (j < 0) result.expressible = false;
+      scale_steps[c] = std::max(0, j);
+      exponent[c] = exponent[p] + scale_steps[c];
+    }
+  double total = 0;
+  for (std::size_t v = 0; v < n; ++v) total += length_of(tree.nodes[v]) / std::exp(exponent[v] * log_scale);
+  result.step = total / static_cast<double>(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const double expected = result.step * std::exp(exponent[v] * log_scale);
+    if (expected > 0) result.worst_length_error = std::max(result.worst_length_error, std::abs(length_of(tree.nodes[v]) - expected) / expected);
+  }
+  result.heading_deg = heading_of(tree.nodes.front());
+
+  // Depth-first writing with an explicit stack (chains may be thousands of segments deep).
+  struct Item {
+    std::size_t node;
+    bool bracketed;
+    bool close;
+  };
+  std::vector<Item> stack{{0, false, false}};
+  std::vector<std::size_t> order;
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    if (item.close) {
+      result.text += ']';
+      continue;
+    }
+    const std::size_t v = item.node;
+    if (item.bracketed) result.text += '[';
+    result.text.append(static_cast<std::size_t>(std::abs(turn_steps[v])), turn_steps[v] > 0 ? '+' : '-');
+    result.text.append(static_cast<std::size_t>(scale_steps[v]), '*');
+    result.text += 'F';
+    order = tree.children[v];
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (size[a] != size[b]) return size[a] < size[b];
+      return descending_turns ? turn_steps[a] > turn_steps[b] : turn_steps[a] < turn_steps[b];
+    });
+    for (std::size_t k = order.size(); k-- > 0;) {
+      if (k + 1 == order.size()) {
+        stack.push_back({order[k], false, false});
+      } else {
+        stack.push_back({0, false, true});
+        stack.push_back({order[k], true, false});
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace dg

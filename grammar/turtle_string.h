@@ -1,0 +1,45 @@
+#pragma once
+// From an instance tree to the bracketed turtle string that draws it (symbols F + - [ ] *),
+// with the turtle parameters estimated from the tree (Guo et al. 2020 §4.2, rule parameter
+// estimation): the turn of `+`/`-` (δ) by clustering the turns between linked segments, the
+// factor of `*` by clustering their length ratios, the step by averaging the segment lengths
+// divided by their scale.
+
+#include "grammar/instance_tree.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace dg {
+
+/// Turtle parameters of a tree of segments.
+struct TurtleParameters {
+  std::optional<double> angle_deg;  ///< δ in degrees (absent when no link turns)
+  std::optional<double> scale;      ///< factor of `*`, below 1 (absent when all links keep the length)
+};
+
+/// δ: the turns between linked segments are clustered (sorted, split at gaps over 3 degrees);
+/// the smallest cluster of at least 5 degrees holding 2 % of the links gives δ, refined by least
+/// squares over all turns as multiples of it (turns under 5 degrees count as straight). Scale:
+/// likewise on |log| of the length ratios child / parent (gaps 0.03, least log 1.08), below 1.
+TurtleParameters estimate_turtle_parameters(const InstanceTree& tree);
+
+/// The turtle string of a tree and how well it fits.
+struct TurtleString {
+  std::string text;               ///< one character per symbol: F + - [ ] *
+  double step = 0;                ///< length of F at scale 1, drawing units (mean over nodes)
+  double heading_deg = 0;         ///< heading of the root segment, degrees counter-clockwise
+  double worst_turn_error_deg = 0;  ///< largest |turn - k δ| over the links
+  double worst_length_error = 0;    ///< largest relative |length - step s^j| over the nodes
+  bool expressible = true;          ///< false when a link grows the length (needs a `/`)
+};
+
+/// Writes the tree depth first: a node is its turn (`+` or `-` repeated k times for k δ), its
+/// scale change (`*` repeated j times for s^j), then `F`; its children follow, each in brackets
+/// except the one with the largest subtree, which continues the branch unbracketed and comes
+/// last. Bracketed children come smallest subtree first, ties by turn (ascending, or descending
+/// with `descending_turns`), then by input order.
+TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns);
+
+}  // namespace dg
