@@ -8,13 +8,12 @@
 
 #include <fstream>
 #include <iterator>
+#include <map>
 
 namespace dg {
 namespace {
 
-nlohmann::json matrix_json(const Vec3& translation) {
-  Mat4 m = Mat4::Identity();
-  m.topRightCorner<3, 1>() = translation;
+nlohmann::json matrix_json(const Mat4& m) {
   nlohmann::json rows = nlohmann::json::array();
   for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
   return rows;
@@ -34,6 +33,43 @@ T field(const nlohmann::json& object, const char* key, const std::string& where)
   } catch (const nlohmann::json::exception&) {
     throw InputError(where + ": field \"" + key + "\" has the wrong type");
   }
+}
+
+Vec3 vec3_field(const nlohmann::json& object, const char* key, const std::string& where) {
+  const auto v = field<std::vector<double>>(object, key, where);
+  if (v.size() != 3) throw InputError(where + ": field \"" + key + "\" needs three numbers");
+  return Vec3(v[0], v[1], v[2]);
+}
+
+RigidTransform matrix_field(const nlohmann::json& object, const char* key, const std::string& where) {
+  const auto rows = field<std::vector<std::vector<double>>>(object, key, where);
+  Mat4 m = Mat4::Identity();
+  if (rows.size() != 4) throw InputError(where + ": field \"" + key + "\" must be a 4x4 matrix");
+  for (int r = 0; r < 4; ++r) {
+    if (rows[r].size() != 4) throw InputError(where + ": field \"" + key + "\" must be a 4x4 matrix");
+    for (int c = 0; c < 4; ++c) m(r, c) = rows[r][c];
+  }
+  return rigid_from_matrix(m);
+}
+
+// One production: its terminal goes to a sidecar file (none when it has no triangles).
+nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProduction& p, const std::filesystem::path& folder,
+                               const std::string& file) {
+  nlohmann::json children = nlohmann::json::array();
+  for (const ChildSlot& c : p.children)
+    children.push_back({{"nonterminal", g.nonterminals[c.nonterminal].name},
+                        {"placement", matrix_json(c.placement.matrix())},
+                        {"original_production", c.original_production}});
+  nlohmann::json terminal = nullptr;
+  if (!p.terminal.triangles.empty()) {
+    write_mesh(folder / file, p.terminal);
+    terminal = folder.filename().string() + "/" + file;
+  }
+  return {{"lhs", p.lhs == kNoProduction ? nlohmann::json(nullptr) : nlohmann::json(g.nonterminals[p.lhs].name)},
+          {"terminal", terminal},
+          {"triangles", p.terminal.triangles.size()},
+          {"children", children},
+          {"source_site", p.source_site}};
 }
 
 }  // namespace
@@ -68,7 +104,9 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                             {"pitch", d.pitch},
                             {"cut", d.cut},
                             {"count", d.count}});
-      transforms.push_back(matrix_json(d.translation));
+      RigidTransform shift;
+      shift.translation = d.translation;
+      transforms.push_back(matrix_json(shift.matrix()));
       counts.push_back(d.count);
     }
     nlohmann::json pieces = nlohmann::json::array();
@@ -88,6 +126,18 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                      {"directions", directions},
                      {"pieces", pieces}});
   }
+  const ContextFreeGrammar& cf = grammar.context_free;
+  nlohmann::json nonterminals = nlohmann::json::array(), productions = nlohmann::json::array(), axiom = nullptr;
+  for (const ShapeNonterminal& n : cf.nonterminals)
+    nonterminals.push_back({{"name", n.name},
+                            {"seam_normal", {n.seam_normal.x(), n.seam_normal.y(), n.seam_normal.z()}},
+                            {"seam_offset", n.seam_offset},
+                            {"sites", n.sites}});
+  if (!cf.empty()) {
+    axiom = production_json(cf, cf.axiom, folder, "axiom.ply");
+    for (std::size_t i = 0; i < cf.productions.size(); ++i)
+      productions.push_back(production_json(cf, cf.productions[i], folder, fmt::format("production_{}.ply", i + 1)));
+  }
   const nlohmann::json document = {{"format", "dockgrammar-grammar"},
                                    {"version", kGrammarFileVersion},
                                    {"units", "model units of the source file"},
@@ -96,10 +146,63 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                                    {"eps", grammar.eps},
                                    {"exemplar", folder_name + "/exemplar.ply"},
                                    {"grids", grids},
-                                   {"nonterminals", nlohmann::json::array()},
-                                   {"productions", nlohmann::json::array()}};
+                                   {"nonterminals", nonterminals},
+                                   {"axiom", axiom},
+                                   {"productions", productions}};
   write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << '\n'; }, false);
 }
+
+namespace {
+
+template <class Load>
+ShapeProduction read_production(const nlohmann::json& p, const std::string& where, const std::map<std::string, std::size_t>& names,
+                           std::size_t production_count, const Load& load) {
+  auto nonterminal = [&](const std::string& name) {
+    auto it = names.find(name);
+    if (it == names.end()) throw InputError(where + ": unknown non-terminal \"" + name + "\"");
+    return it->second;
+  };
+  ShapeProduction production;
+  if (!p.contains("lhs")) throw InputError(where + ": a production has no \"lhs\"");
+  if (!p.at("lhs").is_null()) production.lhs = nonterminal(field<std::string>(p, "lhs", where));
+  if (!p.contains("terminal")) throw InputError(where + ": a production has no \"terminal\"");
+  if (!p.at("terminal").is_null()) production.terminal = load(field<std::string>(p, "terminal", where));
+  production.source_site = field<std::size_t>(p, "source_site", where);
+  for (const nlohmann::json& c : field<nlohmann::json>(p, "children", where)) {
+    ChildSlot slot;
+    slot.nonterminal = nonterminal(field<std::string>(c, "nonterminal", where));
+    slot.placement = matrix_field(c, "placement", where);
+    slot.original_production = field<std::size_t>(c, "original_production", where);
+    if (slot.original_production >= production_count)
+      throw InputError(where + ": a child slot names production " + std::to_string(slot.original_production) +
+                       ", which does not exist");
+    production.children.push_back(slot);
+  }
+  return production;
+}
+
+template <class Load>
+void read_context_free(const nlohmann::json& document, const std::string& where, const Load& load, ContextFreeGrammar& cf) {
+  std::map<std::string, std::size_t> names;
+  for (const nlohmann::json& n : field<nlohmann::json>(document, "nonterminals", where)) {
+    ShapeNonterminal nt;
+    nt.name = field<std::string>(n, "name", where);
+    nt.seam_normal = vec3_field(n, "seam_normal", where);
+    nt.seam_offset = field<double>(n, "seam_offset", where);
+    nt.sites = field<std::size_t>(n, "sites", where);
+    names[nt.name] = cf.nonterminals.size();
+    cf.nonterminals.push_back(nt);
+  }
+  if (cf.nonterminals.empty()) return;
+  const nlohmann::json productions = field<nlohmann::json>(document, "productions", where);
+  for (const nlohmann::json& p : productions) {
+    cf.productions.push_back(read_production(p, where, names, productions.size(), load));
+    if (cf.productions.back().lhs == kNoProduction) throw InputError(where + ": a production has no left-hand side");
+  }
+  cf.axiom = read_production(field<nlohmann::json>(document, "axiom", where), where, names, productions.size(), load);
+}
+
+}  // namespace
 
 ShapeGrammar read_grammar(const std::filesystem::path& path) {
   const std::string where = path.string();
@@ -111,7 +214,7 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
   if (field<std::string>(document, "format", where) != "dockgrammar-grammar")
     throw InputError(where + ": not a dockgrammar grammar file");
   const int version = field<int>(document, "version", where);
-  if (version != kGrammarFileVersion)
+  if (version < 1 || version > kGrammarFileVersion)
     throw InputError(fmt::format("{}: grammar file version {} is not supported (this program reads version {})", where,
                                  version, kGrammarFileVersion));
   ShapeGrammar grammar;
@@ -156,6 +259,7 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     }
     grammar.grids.push_back(std::move(entry));
   }
+  if (version >= 2) read_context_free(document, where, load, grammar.context_free);
   return grammar;
 }
 

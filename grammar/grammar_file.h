@@ -2,6 +2,7 @@
 // The grammar file written by `analyze` and read by `generate`/`resize`: versioned JSON with
 // sidecar piece meshes (binary PLY) in a folder next to it. Documented in docs/grammar-file.md.
 
+#include "grammar/context_free.h"
 #include "grammar/grid_rules.h"
 
 #include <nlohmann/json.hpp>
@@ -13,7 +14,7 @@
 
 namespace dg {
 
-inline constexpr int kGrammarFileVersion = 1;
+inline constexpr int kGrammarFileVersion = 2;  ///< version 1 (grids only) is still read
 
 /// A grid rule with its pieces and where they are stored.
 struct GridWithPieces {
@@ -26,6 +27,7 @@ struct ShapeGrammar {
   std::string source_hash;    ///< FNV-1a 64-bit hash of the exemplar file's bytes, hex
   double r = 0.0, eps = 0.0;  ///< model units
   std::vector<GridWithPieces> grids;
+  ContextFreeGrammar context_free;  ///< empty when no docking site gave a production
   /// The exemplar's cleaned mesh (used when no grid is resized and for reference).
   TriangleMesh exemplar;
 };

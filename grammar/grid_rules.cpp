@@ -1,6 +1,7 @@
 #include "grammar/grid_rules.h"
 
 #include "geometry/slab_cut.h"
+#include "geometry/submesh.h"
 #include "symmetry/symmetric_region.h"
 
 #include <algorithm>
@@ -207,7 +208,7 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
 std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
   const GridCut grid_cut = cut_along_grid(mesh, grid, eps);
   const TriangleMesh& cut = grid_cut.mesh;
-  std::map<std::vector<int>, TriangleMesh> by_class;
+  std::map<std::vector<int>, std::vector<std::size_t>> by_class;
   for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
     std::vector<int> classes;
     for (std::size_t i = 0; i < grid.directions.size(); ++i) {
@@ -216,26 +217,10 @@ std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule&
       classes.push_back(c);
     }
     if (classes.size() != grid.directions.size()) continue;  // lies in a copy of a unit
-    by_class[classes].triangles.push_back(cut.triangles[t]);
+    by_class[classes].push_back(t);
   }
   std::vector<GridPiece> pieces;
-  for (auto& [classes, piece] : by_class) {
-    // Keep only the vertices the piece uses, in first-use order.
-    std::vector<std::int64_t> remap(cut.positions.size(), -1);
-    TriangleMesh compact;
-    for (const Triangle& tri : piece.triangles) {
-      Triangle mapped;
-      for (int k = 0; k < 3; ++k) {
-        if (remap[tri[k]] < 0) {
-          remap[tri[k]] = static_cast<std::int64_t>(compact.positions.size());
-          compact.positions.push_back(cut.positions[tri[k]]);
-        }
-        mapped[k] = static_cast<std::uint32_t>(remap[tri[k]]);
-      }
-      compact.triangles.push_back(mapped);
-    }
-    pieces.push_back({classes, std::move(compact)});
-  }
+  for (const auto& [classes, triangles] : by_class) pieces.push_back({classes, submesh(cut, triangles)});
   return pieces;
 }
 

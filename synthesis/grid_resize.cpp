@@ -1,6 +1,7 @@
 #include "synthesis/grid_resize.h"
 
 #include "geometry/errors.h"
+#include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 
 #include <fmt/format.h>
@@ -33,9 +34,9 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
       offsets = std::move(combined);
     }
     for (const Vec3& offset : offsets) {
-      const auto base = static_cast<std::uint32_t>(result.positions.size());
-      for (const Vec3& p : piece.mesh.positions) result.positions.push_back(p + offset);
-      for (const Triangle& t : piece.mesh.triangles) result.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+      RigidTransform shift;
+      shift.translation = offset;
+      append_mesh(result, transformed(piece.mesh, shift));
     }
   }
   resolve_t_junctions(result, weld_tolerance);

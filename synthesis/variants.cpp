@@ -17,11 +17,19 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index) {
 }
 
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options) {
-  if (grammar.grids.empty()) throw InputError("the grammar has no rules to vary (no grid was found in the exemplar)");
-  if (grammar.grids.size() > 1) throw InputError("variants of grammars with several grids are not supported yet");
-  if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   VariantPlan plan;
   plan.seed = variant_seed(seed, index);
+  const bool has_context_free = !grammar.context_free.empty();
+  if (options.rules == VariantRules::context_free && !has_context_free)
+    throw InputError("the grammar has no context-free rules (no docking site gave a production)");
+  if (options.rules != VariantRules::grid && has_context_free) {
+    plan.context_free = true;
+    return plan;
+  }
+  if (grammar.grids.empty())
+    throw InputError("the grammar has no rules to vary (no grid and no context-free rule was found in the exemplar)");
+  if (grammar.grids.size() > 1) throw InputError("variants of grammars with several grids are not supported yet");
+  if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   Random random(plan.seed);
   for (const GridWithPieces& grid : grammar.grids) {
     std::vector<int> counts;
@@ -35,9 +43,18 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   return plan;
 }
 
-TriangleMesh build_variant(const ShapeGrammar& grammar, const VariantPlan& plan) {
+Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options) {
+  Variant variant;
+  if (plan.context_free) {
+    ShapeDerivationOptions derivation = options.derivation;
+    derivation.seed = plan.seed;
+    variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
+    variant.mesh = std::move(variant.derivation.mesh);
+    return variant;
+  }
   const GridWithPieces& grid = grammar.grids.front();
-  return resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), 1e-6 * grammar.eps);
+  variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), 1e-6 * grammar.eps);
+  return variant;
 }
 
 }  // namespace dg

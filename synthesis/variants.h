@@ -1,33 +1,47 @@
 #pragma once
-// Random variants of a grammar. Version-1 grammars hold grid rules only, so a variant draws
-// new counts for every grid direction; variant i depends only on (grammar, seed, i).
+// Random variants of a grammar: a random derivation of its context-free rules, or new random
+// counts for its grid. Variant i depends only on (grammar, seed, i).
 
 #include "grammar/grammar_file.h"
+#include "synthesis/shape_derivation.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace dg {
 
+/// Which rules make variants: context-free rules when the grammar has them, else the grid.
+enum class VariantRules { automatic, grid, context_free };
+
 struct VariantOptions {
-  /// Counts are drawn uniformly from [ceil(count / range_factor), count * range_factor] (at
-  /// least 1, within the grid's count range), count = the exemplar's count.
+  VariantRules rules = VariantRules::automatic;
+  /// Grid variants: counts are drawn uniformly from [ceil(count / range_factor),
+  /// count * range_factor] (at least 1, within the grid's count range), count = the exemplar's.
   double range_factor = 2.0;
+  /// Context-free variants: retries, limits (the seed is set per variant).
+  ShapeDerivationOptions derivation;
 };
 
 /// The random choices of one variant.
 struct VariantPlan {
   std::uint64_t seed = 0;                      ///< the variant's own seed (derived from seed and index)
-  std::vector<std::vector<int>> grid_counts;   ///< per grid, per direction
+  bool context_free = false;                   ///< derived from the context-free rules
+  std::vector<std::vector<int>> grid_counts;   ///< grid variants: per grid, per direction
+};
+
+/// A built variant.
+struct Variant {
+  TriangleMesh mesh;
+  ShapeDerivation derivation;  ///< context-free variants: what was applied (its mesh is moved to `mesh`)
 };
 
 /// Seed of variant `index` of a batch started with `seed` (SplitMix64 of both).
 std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 
-/// Draws the counts of variant `index`. Throws InputError when the grammar has nothing to vary.
+/// Plans variant `index`. Throws InputError when the grammar has no rules of the requested kind.
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 
-/// Builds the mesh of a planned variant (grids resized; a grammar with one grid only).
-TriangleMesh build_variant(const ShapeGrammar& grammar, const VariantPlan& plan);
+/// Builds the mesh of a planned variant.
+Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -103,7 +103,8 @@ TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") 
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   write_text(folder / "truncated.grammar.json", text.substr(0, text.size() / 2));
   std::string wrong_version = text;
-  wrong_version.replace(wrong_version.find("\"version\": 1"), 12, "\"version\": 99");
+  const std::string version_field = "\"version\": " + std::to_string(dg::kGrammarFileVersion);
+  wrong_version.replace(wrong_version.find(version_field), version_field.size(), "\"version\": 99");
   write_text(folder / "version.grammar.json", wrong_version);
   for (const char* bad : {"truncated.grammar.json", "version.grammar.json"}) {
     try {

@@ -50,7 +50,7 @@ TEST_CASE("variants: seeded, independent of batch position, closed, matching the
     const dg::VariantPlan plan = dg::plan_variant(grammar, 11, i);
     if (plan.grid_counts.front() != previous) ++distinct;
     previous = plan.grid_counts.front();
-    const dg::TriangleMesh mesh = dg::build_variant(grammar, plan);
+    const dg::TriangleMesh mesh = dg::build_variant(grammar, plan).mesh;
     CHECK(dg::is_closed_and_oriented(mesh));
     if (i < 3) {
       // A variant with counts (c, m) is the generator's facade(c, m).

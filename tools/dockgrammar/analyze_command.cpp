@@ -5,6 +5,8 @@
 #include "tools/dockgrammar/grammar_report.h"
 #include "tools/dockgrammar/model_options.h"
 
+#include "grammar/context_free.h"
+#include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
 #include "grammar/grid_rules.h"
 #include "symmetry/symmetry_detection.h"
@@ -46,6 +48,9 @@ void add_analyze_command(CLI::App& app) {
       std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
+    const DockingSiteResult docking = find_docking_sites(prepared, symmetries);
+    ContextFreeStats cf_stats;
+    grammar.context_free = build_context_free_grammar(prepared, docking, {}, &cf_stats);
     const double grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const std::filesystem::path folder(options->output);
@@ -55,7 +60,7 @@ void add_analyze_command(CLI::App& app) {
     std::string stem = std::filesystem::path(options->model.model_path).stem().string();
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
-    AnalysisReport report{prepared, symmetries, grammar, grid_seconds, grammar_path};
+    AnalysisReport report{prepared, symmetries, grammar, docking, grid_seconds, grammar_path};
     write_analysis_report(folder / (stem + ".report.md"), report);
     write_analysis_pictures(folder, stem, report);
     if (options->model.json)

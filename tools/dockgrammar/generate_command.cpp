@@ -5,6 +5,7 @@
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "synthesis/shape_derivation.h"
 #include "synthesis/variants.h"
 
 #include <fmt/core.h>
@@ -26,11 +27,14 @@ void add_generate_command(CLI::App& app) {
     std::string output;
     std::string format = "obj";
     double range_factor = 2.0;
+    std::string rules = "auto";
+    int max_depth = 24;
+    std::size_t max_triangles = 5'000'000;
     bool quiet = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "generate", "Write random variants of a grammar (version 1 grammars: random grid counts) plus DIR/manifest.json");
+      "generate", "Write random variants of a grammar (random context-free derivations, or random grid counts) plus DIR/manifest.json");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze")->required();
   command->add_option("--count", options->count, "Number of variants")->capture_default_str()->check(CLI::Range(1, 1000000));
   command->add_option("--seed", options->seed, "Seed of the batch; variant i depends only on (grammar, seed, i)")->capture_default_str();
@@ -40,6 +44,15 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 100.0));
+  command->add_option("--rules", options->rules, "auto (context-free rules when the grammar has them), grid or context-free")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "grid", "context-free"}));
+  command->add_option("--max-depth", options->max_depth, "Context-free: deeper slots get the exemplar's production")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10000));
+  command->add_option("--max-triangles", options->max_triangles,
+                      "Context-free: after this many triangles every slot gets the exemplar's production")
+      ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
@@ -49,21 +62,44 @@ void add_generate_command(CLI::App& app) {
     if (error) throw InputError(folder.string() + ": cannot create the output folder");
     VariantOptions variant_options;
     variant_options.range_factor = options->range_factor;
+    variant_options.rules = options->rules == "grid"           ? VariantRules::grid
+                            : options->rules == "context-free" ? VariantRules::context_free
+                                                               : VariantRules::automatic;
+    variant_options.derivation.max_depth = options->max_depth;
+    variant_options.derivation.max_triangles = options->max_triangles;
+    std::size_t limited = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t n = 0; n < options->count; ++n) {
       const std::uint64_t index = options->first + n;
       const VariantPlan plan = plan_variant(grammar, options->seed, index, variant_options);
-      const TriangleMesh mesh = build_variant(grammar, plan);
+      const Variant variant = build_variant(grammar, plan, variant_options);
+      const TriangleMesh& mesh = variant.mesh;
       const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
       write_mesh(folder / file, mesh);
       nlohmann::json grids = nlohmann::json::object();
-      for (std::size_t g = 0; g < grammar.grids.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
-      variants.push_back({{"index", index}, {"file", file}, {"seed", plan.seed}, {"grids", grids},
-                          {"productions", nlohmann::json::array()}, {"triangles", mesh.triangles.size()}});
+      for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
+      const ShapeDerivation& d = variant.derivation;
+      nlohmann::json productions = nlohmann::json::array();
+      for (std::size_t p : d.productions) productions.push_back(p);
+      if (d.depth_limited || d.triangle_limited) ++limited;
+      variants.push_back({{"index", index},
+                          {"file", file},
+                          {"seed", plan.seed},
+                          {"rules", plan.context_free ? "context-free" : "grid"},
+                          {"grids", grids},
+                          {"productions", productions},
+                          {"collisions_retried", d.collisions_retried},
+                          {"fallbacks", d.fallbacks},
+                          {"depth_limited", d.depth_limited},
+                          {"triangle_limited", d.triangle_limited},
+                          {"triangles", mesh.triangles.size()}});
       if (progress) fmt::print(stderr, "\r\033[Kvariant {}/{}", n + 1, options->count);
     }
     if (progress) fmt::print(stderr, "\n");
+    if (limited > 0 && !options->quiet)
+      fmt::print(stderr, "note: {} variant(s) reached --max-depth or --max-triangles; their deeper slots kept the exemplar's geometry\n",
+                 limited);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
                                      {"count", options->count},     {"variants", variants}};
     write_file_atomically(folder / "manifest.json", [&](std::ostream& out) { out << manifest.dump(2) << '\n'; }, false);

@@ -7,14 +7,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dg::cli {
 namespace {
 
 constexpr const char* kMissing =
-    "context-free rules (docking sites, dockers, insert/delete/replace operations, non-terminals and productions) are "
-    "not implemented yet; the grammar holds grid rules only";
+    "grids of rotations and screw motions are not built; docking sites whose band is not planar, or that slide "
+    "along themselves, give no context-free production";
 
 std::string counts_text(const GridRule& grid) {
   std::string text;
@@ -37,6 +38,76 @@ nlohmann::json timings_json(const AnalysisReport& report) {
   return timings;
 }
 
+nlohmann::json operation_counts(const DockingSiteResult& docking) {
+  nlohmann::json counts = {{"insert", 0}, {"delete", 0}, {"replace", 0}};
+  for (const DockingSite& s : docking.sites) counts[operation_name(s.operation)] = counts[operation_name(s.operation)].get<int>() + 1;
+  return counts;
+}
+
+nlohmann::json docking_sites_json(const AnalysisReport& report) {
+  nlohmann::json sites = nlohmann::json::array();
+  const double total = report.prepared.surface.total_area();
+  for (const DockingSite& s : report.docking.sites)
+    sites.push_back({{"symmetry", s.symmetry + 1},
+                     {"inverse", s.inverse},
+                     {"operation", operation_name(s.operation)},
+                     {"site_cells", s.site.size()},
+                     {"docker_fraction", s.docker_area / total},
+                     {"secondary_docker_fraction", s.secondary_docker_area / total},
+                     {"regions", s.regions},
+                     {"collides", s.collides},
+                     {"slippable_motions", s.slippable_motions},
+                     {"slippable", s.slippable}});
+  return sites;
+}
+
+nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProduction& p) {
+  nlohmann::json children = nlohmann::json::array();
+  for (const ChildSlot& c : p.children) children.push_back(g.nonterminals[c.nonterminal].name);
+  return {{"lhs", p.lhs == kNoProduction ? "axiom" : g.nonterminals[p.lhs].name},
+          {"children", children},
+          {"terminal_triangles", p.terminal.triangles.size()}};
+}
+
+nlohmann::json nonterminals_json(const ContextFreeGrammar& g) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ShapeNonterminal& n : g.nonterminals) out.push_back({{"name", n.name}, {"sites", n.sites}});
+  return out;
+}
+
+nlohmann::json productions_json(const ContextFreeGrammar& g) {
+  nlohmann::json out = nlohmann::json::array();
+  if (g.empty()) return out;
+  out.push_back(production_json(g, g.axiom));
+  for (const ShapeProduction& p : g.productions) out.push_back(production_json(g, p));
+  return out;
+}
+
+std::string context_free_markdown(const AnalysisReport& report) {
+  const ContextFreeGrammar& cf = report.grammar.context_free;
+  const nlohmann::json ops = operation_counts(report.docking);
+  std::string md = fmt::format(
+      "## Docking sites and context-free rules\n\n{} elementary docking sites over the top symmetries: {} insert, {} delete, "
+      "{} replace ({} marked as colliding, {} slippable).\n\n",
+      report.docking.sites.size(), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
+      std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.collides; }),
+      std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }));
+  if (cf.empty()) return md + "No context-free production was built.\n\n";
+  md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
+  for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
+    md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
+                      std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }));
+  md += "\nProductions (terminal triangles, then the non-terminals they contain):\n\n";
+  auto line = [&](const std::string& lhs, const ShapeProduction& p) {
+    std::string children;
+    for (const ChildSlot& c : p.children) children += " " + cf.nonterminals[c.nonterminal].name;
+    return fmt::format("- {} -> terminal({} triangles){}\n", lhs, p.terminal.triangles.size(), children);
+  };
+  md += line("axiom", cf.axiom);
+  for (const ShapeProduction& p : cf.productions) md += line(cf.nonterminals[p.lhs].name, p);
+  return md + "\n";
+}
+
 }  // namespace
 
 std::string analysis_text(const AnalysisReport& report) {
@@ -51,7 +122,16 @@ std::string analysis_text(const AnalysisReport& report) {
       out += fmt::format("  direction t = {}, pitch {:.6g}, {} units, first cut at {:.6g}\n", vec(d.translation), d.pitch,
                          d.count, d.cut);
   }
-  out += fmt::format("grammar written to {}\nnote: {}\n", report.grammar_path.string(), kMissing);
+  const ContextFreeGrammar& cf = report.grammar.context_free;
+  const nlohmann::json ops = operation_counts(report.docking);
+  out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
+                     ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
+  if (cf.empty())
+    out += "context-free rules: none (no docking site with a planar seam that repeats)\n";
+  else
+    out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom (generate makes random variants)\n",
+                       cf.nonterminals.size(), cf.productions.size());
+  out += fmt::format("grammar written to {}\nnot built: {}\n", report.grammar_path.string(), kMissing);
   return out;
 }
 
@@ -81,11 +161,11 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"eps", report.prepared.surface.eps()},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},
-          {"docking_sites", nullptr},
-          {"dockers", nullptr},
-          {"operations", {{"insert", nullptr}, {"delete", nullptr}, {"replace", nullptr}}},
-          {"nonterminals", nullptr},
-          {"productions", nullptr},
+          {"docking_sites", docking_sites_json(report)},
+          {"dockers", report.docking.sites.size()},
+          {"operations", operation_counts(report.docking)},
+          {"nonterminals", nonterminals_json(report.grammar.context_free)},
+          {"productions", productions_json(report.grammar.context_free)},
           {"grids", grids},
           {"grammar_file", report.grammar_path.string()},
           {"timings_s", timings_json(report)},
@@ -116,6 +196,7 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
     md += fmt::format("\nAllowed counts per direction: {}..{}. Picture: `{}.png`.\n\n", grid.rule.min_count, grid.rule.max_count,
                       path.stem().stem().string() + "." + grid.rule.name);
   }
+  md += context_free_markdown(report);
   md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", kMissing);
   const nlohmann::json timings = timings_json(report);
   for (const auto& [stage, seconds] : timings.items()) md += fmt::format("- {}: {:.3f}\n", stage, seconds.get<double>());

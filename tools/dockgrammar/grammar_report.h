@@ -2,6 +2,7 @@
 // What `analyze` tells the user: text summary, JSON summary, Markdown report and pictures.
 
 #include "geometry/prepared_model.h"
+#include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -16,6 +17,7 @@ struct AnalysisReport {
   const PreparedModel& prepared;
   const SymmetryResult& symmetries;
   const ShapeGrammar& grammar;
+  const DockingSiteResult& docking;
   double grid_seconds = 0.0;
   std::filesystem::path grammar_path;
 };

@@ -1,0 +1,38 @@
+#include "geometry/submesh.h"
+
+#include <cstdint>
+
+namespace dg {
+
+TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles) {
+  std::vector<std::int64_t> remap(mesh.positions.size(), -1);
+  TriangleMesh part;
+  part.triangles.reserve(triangles.size());
+  for (std::size_t t : triangles) {
+    Triangle mapped;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh.triangles[t][k];
+      if (remap[v] < 0) {
+        remap[v] = static_cast<std::int64_t>(part.positions.size());
+        part.positions.push_back(mesh.positions[v]);
+      }
+      mapped[k] = static_cast<std::uint32_t>(remap[v]);
+    }
+    part.triangles.push_back(mapped);
+  }
+  return part;
+}
+
+TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion) {
+  TriangleMesh moved = mesh;
+  for (Vec3& p : moved.positions) p = motion.apply(p);
+  return moved;
+}
+
+void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
+  const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
+  for (const Triangle& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+}  // namespace dg

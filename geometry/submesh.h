@@ -1,0 +1,21 @@
+#pragma once
+// Selecting and moving parts of a mesh.
+
+#include "geometry/mesh.h"
+#include "geometry/rigid_transform.h"
+
+#include <vector>
+
+namespace dg {
+
+/// The triangles of `mesh` listed in `triangles` (in that order) with only the vertices they
+/// use, renumbered in first-use order.
+TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles);
+
+/// `mesh` moved by a rigid motion.
+TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion);
+
+/// Appends `part` (vertices and triangles) to `mesh`.
+void append_mesh(TriangleMesh& mesh, const TriangleMesh& part);
+
+}  // namespace dg

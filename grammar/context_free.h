@@ -1,0 +1,83 @@
+#pragma once
+// Context-free shape grammar from docking sites (paper 001 §3.4.2).
+//
+// Every docking site location in the exemplar (primary and secondary sites alike) is a node
+// with its band and docker. Nodes related by the motion of a site (or found at the same place
+// twice) share one non-terminal; each node keeps the rigid motion `frame` that maps the
+// non-terminal's own frame (that of its first node) onto the node. Nodes form an inclusion
+// tree (a node is a child of the smallest docker holding its band and docker). For each node,
+// randomly sampled maximal independent sets of its non-conflicting children (sites sharing
+// cells or dockers overlapping conflict) give productions
+//     node's non-terminal -> terminal remainder + child non-terminals,
+// stored in the non-terminal's frame; the whole model is the axiom.
+//
+// Geometry is cut out of the original triangles along one plane per non-terminal (its seam),
+// fitted through the band of its first node and mapped by each node's frame, so a docker cut
+// at one node fits exactly into the seam of any other node of the same non-terminal. Sites
+// whose band is not planar, or that slide along themselves (slippage), give no non-terminal.
+
+#include "geometry/mesh.h"
+#include "geometry/prepared_model.h"
+#include "geometry/rigid_transform.h"
+#include "grammar/docking_sites.h"
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace dg {
+
+inline constexpr std::size_t kNoProduction = std::numeric_limits<std::size_t>::max();
+
+/// A non-terminal: a docking site shape. Its seam plane n . x = offset is in its own frame;
+/// the docker lies on the side the normal points to.
+struct ShapeNonterminal {
+  std::string name;
+  Vec3 seam_normal = Vec3::UnitX();
+  double seam_offset = 0.0;
+  std::size_t sites = 0;  ///< exemplar locations of this shape
+};
+
+/// A non-terminal occurrence on the right-hand side of a production.
+struct ChildSlot {
+  std::size_t nonterminal = 0;
+  RigidTransform placement;  ///< from the child's frame to the parent production's frame
+  /// The production that rebuilds the exemplar at this place (fallback after collisions).
+  std::size_t original_production = kNoProduction;
+};
+
+/// lhs -> terminal + children. The axiom has lhs == kNoProduction.
+struct ShapeProduction {
+  std::size_t lhs = kNoProduction;
+  TriangleMesh terminal;  ///< in the lhs frame (model frame for the axiom)
+  std::vector<ChildSlot> children;
+  std::size_t source_site = 0;  ///< exemplar location it was cut from (report only)
+};
+
+struct ContextFreeGrammar {
+  std::vector<ShapeNonterminal> nonterminals;
+  std::vector<ShapeProduction> productions;  ///< all with lhs set, grouped by nothing in particular
+  ShapeProduction axiom;
+  bool empty() const { return nonterminals.empty(); }
+};
+
+struct ContextFreeOptions {
+  int independent_set_trials = 10;  ///< random maximal independent sets per node (paper: 10)
+  std::uint64_t seed = 1;           ///< seeds the independent-set sampling
+  std::size_t max_nodes = 256;      ///< docking site locations kept (largest dockers first)
+};
+
+struct ContextFreeStats {
+  std::size_t sites_used = 0;        ///< docking sites that entered the grammar
+  std::size_t sites_slippable = 0;   ///< dropped: the band slides along itself
+  std::size_t sites_not_planar = 0;  ///< dropped: no single seam plane through the band
+  std::size_t nodes = 0;             ///< distinct site locations
+};
+
+/// Builds the context-free grammar of a prepared mesh from its docking sites. Deterministic
+/// for a given seed.
+ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, const DockingSiteResult& sites,
+                                              const ContextFreeOptions& options, ContextFreeStats* stats = nullptr);
+
+}  // namespace dg

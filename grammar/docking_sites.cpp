@@ -1,0 +1,282 @@
+#include "grammar/docking_sites.h"
+
+#include "symmetry/slippage.h"
+#include "symmetry/symmetric_region.h"
+
+#include <algorithm>
+#include <numeric>
+#include <optional>
+
+namespace dg {
+
+std::string operation_name(OperationKind kind) {
+  switch (kind) {
+    case OperationKind::insert: return "insert";
+    case OperationKind::remove: return "delete";
+    case OperationKind::replace: return "replace";
+  }
+  return "replace";
+}
+
+namespace {
+
+using Cells = std::vector<std::uint32_t>;
+
+Cells cells_of(const std::vector<char>& mask) {
+  Cells out;
+  for (std::uint32_t c = 0; c < mask.size(); ++c)
+    if (mask[c]) out.push_back(c);
+  return out;
+}
+
+std::vector<char> mask_of(const Cells& cells, std::size_t count) {
+  std::vector<char> mask(count, 0);
+  for (std::uint32_t c : cells) mask[c] = 1;
+  return mask;
+}
+
+// Connected components (26-adjacency) of the cells whose mask is set; -1 elsewhere.
+std::vector<std::int32_t> label_components(const VoxelSurface& surface, const std::vector<char>& mask, std::size_t& count) {
+  std::vector<std::int32_t> label(surface.cell_count(), -1);
+  count = 0;
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t start = 0; start < surface.cell_count(); ++start) {
+    if (!mask[start] || label[start] >= 0) continue;
+    const auto id = static_cast<std::int32_t>(count++);
+    label[start] = id;
+    queue.assign(1, start);
+    for (std::size_t head = 0; head < queue.size(); ++head)
+      for (std::uint32_t n : surface.neighbours(queue[head]))
+        if (mask[n] && label[n] < 0) {
+          label[n] = id;
+          queue.push_back(n);
+        }
+  }
+  return label;
+}
+
+// Cells of `allowed` adjacent to a cell of `inside` and not in `inside` themselves.
+Cells ring_around(const VoxelSurface& surface, const Cells& inside, const std::vector<char>& inside_mask,
+                  const std::vector<char>& allowed) {
+  Cells ring;
+  for (std::uint32_t c : inside)
+    for (std::uint32_t n : surface.neighbours(c))
+      if (allowed[n] && !inside_mask[n]) ring.push_back(n);
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  return ring;
+}
+
+double area_of(const VoxelSurface& surface, const Cells& cells) {
+  double area = 0.0;
+  for (std::uint32_t c : cells) area += surface.area(c);
+  return area;
+}
+
+double shared_fraction(const Cells& of, const std::vector<char>& in) {
+  if (of.empty()) return 0.0;
+  std::size_t shared = 0;
+  for (std::uint32_t c : of) shared += in[c] ? 1 : 0;
+  return static_cast<double>(shared) / static_cast<double>(of.size());
+}
+
+// Slippage dimension of the planes inside the band cells.
+std::size_t band_slippage(const VoxelSurface& surface, const Cells& band) {
+  std::vector<Vec3> points, normals;
+  for (std::uint32_t c : band) {
+    const Vec3 centre = surface.centre(c);
+    for (const CellPlane& plane : surface.planes(c)) {
+      points.push_back(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
+      normals.push_back(plane.normal);
+    }
+  }
+  if (points.size() < 6) return 6;
+  return slippage(points, normals).dimension();
+}
+
+// Everything needed to evaluate docker candidates for one motion.
+struct MotionContext {
+  const VoxelSurface& surface;
+  const CellMatcher& matcher;
+  RigidTransform transform;
+  std::vector<char> symmetric;  // r-symmetric cells under transform
+  double r;
+};
+
+// The docking site around docker cells `docker`, or nothing when it is not valid.
+std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker, Cells& touched_by_image) {
+  const VoxelSurface& surface = m.surface;
+  const std::size_t n = surface.cell_count();
+  std::vector<char> docker_mask = mask_of(docker, n);
+  const Cells ring1 = ring_around(surface, docker, docker_mask, m.symmetric);
+  if (ring1.empty()) return std::nullopt;  // a whole non-symmetric part: nothing to cut
+  std::vector<char> inner_mask = docker_mask;
+  for (std::uint32_t c : ring1) inner_mask[c] = 1;
+  const Cells ring2 = ring_around(surface, ring1, inner_mask, m.symmetric);
+  Cells site = ring1;
+  site.insert(site.end(), ring2.begin(), ring2.end());
+  std::sort(site.begin(), site.end());
+  std::vector<char> site_or_docker = docker_mask;
+  for (std::uint32_t c : site) site_or_docker[c] = 1;
+  const Cells outside = ring_around(surface, site, site_or_docker, m.symmetric);
+  if (outside.empty()) return std::nullopt;  // nothing would remain outside the docker
+
+  // The image of the site, and the images of the cells just outside it.
+  std::vector<char> image_site(n, 0);
+  for (std::uint32_t c : site) {
+    const std::int64_t image = m.matcher.image_cell(c, m.transform);
+    if (image < 0) return std::nullopt;
+    image_site[static_cast<std::uint32_t>(image)] = 1;
+  }
+  touched_by_image = cells_of(image_site);
+  std::vector<char> rest(n, 1);
+  for (std::uint32_t c : touched_by_image) rest[c] = 0;
+  std::size_t parts = 0;
+  const std::vector<std::int32_t> part = label_components(surface, rest, parts);
+  std::vector<char> outer_part(parts, 0);
+  for (std::uint32_t c : outside) {
+    const std::int64_t image = m.matcher.image_cell(c, m.transform);
+    if (image >= 0 && part[static_cast<std::uint32_t>(image)] >= 0) outer_part[part[static_cast<std::uint32_t>(image)]] = 1;
+  }
+  Cells secondary;
+  for (std::uint32_t c = 0; c < n; ++c)
+    if (part[c] >= 0 && !outer_part[part[c]]) secondary.push_back(c);
+  if (secondary.empty()) return std::nullopt;  // T(site) does not split the model
+
+  DockingSite s;
+  s.transform = m.transform;
+  s.site = site;
+  s.docker = docker;
+  s.secondary_site = touched_by_image;
+  s.secondary_docker = secondary;
+  s.docker_area = area_of(surface, docker);
+  s.secondary_docker_area = area_of(surface, secondary);
+  return s;
+}
+
+OperationKind classify(const DockingSite& s, std::size_t cell_count, double containment) {
+  const std::vector<char> docker = mask_of(s.docker, cell_count);
+  const std::vector<char> secondary = mask_of(s.secondary_docker, cell_count);
+  const bool secondary_inside = shared_fraction(s.secondary_docker, docker) >= containment;
+  const bool docker_inside = shared_fraction(s.docker, secondary) >= containment;
+  if (secondary_inside && s.secondary_docker.size() < s.docker.size()) return OperationKind::insert;
+  if (docker_inside && s.docker.size() < s.secondary_docker.size()) return OperationKind::remove;
+  return OperationKind::replace;
+}
+
+// T(D) lands on a cell that stays in place and lies farther than r from the seam.
+bool inserted_docker_collides(const MotionContext& m, const DockingSite& s) {
+  const VoxelSurface& surface = m.surface;
+  const std::vector<double> seam_distance = surface.intrinsic_distance(s.secondary_site, 2.0 * m.r);
+  const std::vector<char> replaced = mask_of(s.secondary_docker, surface.cell_count());
+  for (std::uint32_t c : s.docker) {
+    const std::int64_t hit = surface.find(surface.voxel_of(m.transform.apply(surface.centre(c))));
+    if (hit < 0) continue;
+    const auto cell = static_cast<std::uint32_t>(hit);
+    if (!replaced[cell] && seam_distance[cell] > m.r) return true;
+  }
+  return false;
+}
+
+// Sites of one motion: every non-symmetric region (with dependent regions merged) that gives a
+// valid site; each region ends up in at most one docker.
+void sites_of_motion(const MotionContext& m, const DockingSiteOptions& options, DockingSiteResult& result) {
+  const VoxelSurface& surface = m.surface;
+  const std::size_t n = surface.cell_count();
+  std::vector<char> non_symmetric(n, 0);
+  for (std::uint32_t c = 0; c < n; ++c) non_symmetric[c] = !m.symmetric[c];
+  std::size_t region_count = 0;
+  const std::vector<std::int32_t> region = label_components(surface, non_symmetric, region_count);
+  std::vector<Cells> region_cells(region_count);
+  for (std::uint32_t c = 0; c < n; ++c)
+    if (region[c] >= 0) region_cells[region[c]].push_back(c);
+  result.stats.regions += region_count;
+
+  std::vector<char> used(region_count, 0);
+  for (std::size_t start = 0; start < region_count; ++start) {
+    if (used[start]) continue;
+    std::vector<std::size_t> group{start};
+    std::optional<DockingSite> site;
+    for (int round = 0; round <= options.max_merge_rounds; ++round) {
+      Cells docker;
+      for (std::size_t g : group) docker.insert(docker.end(), region_cells[g].begin(), region_cells[g].end());
+      std::sort(docker.begin(), docker.end());
+      Cells image;
+      site = evaluate(m, docker, image);
+      if (site || image.empty()) break;
+      // Dependent regions: non-symmetric regions the site's image runs through or touches.
+      std::vector<char> in_group(region_count, 0);
+      for (std::size_t g : group) in_group[g] = 1;
+      std::size_t before = group.size();
+      for (std::uint32_t c : image) {
+        auto consider = [&](std::uint32_t cell) {
+          const std::int32_t id = region[cell];
+          if (id >= 0 && !in_group[id] && !used[id]) {
+            in_group[id] = 1;
+            group.push_back(static_cast<std::size_t>(id));
+          }
+        };
+        consider(c);
+        for (std::uint32_t nb : surface.neighbours(c)) consider(nb);
+      }
+      if (group.size() == before) break;
+    }
+    if (!site) {
+      ++result.stats.invalid;
+      continue;
+    }
+    for (std::size_t g : group) used[g] = 1;
+    site->regions = group.size();
+    site->operation = classify(*site, n, options.containment);
+    site->collides = inserted_docker_collides(m, *site);
+    site->slippable_motions = band_slippage(surface, site->site);
+    site->slippable = site->slippable_motions >= options.slippable_dimension;
+    result.sites.push_back(std::move(*site));
+  }
+}
+
+// r-symmetric cells of the inverse motion, grown from the images of the forward region.
+std::vector<char> inverse_region(const VoxelSurface& surface, const CellMatcher& matcher, const DetectedSymmetry& symmetry,
+                                 const RigidTransform& inverse) {
+  const Cells& forward = symmetry.region.r_symmetric_cells;
+  Cells seeds;
+  const std::size_t step = std::max<std::size_t>(1, forward.size() / 64);
+  for (std::size_t i = 0; i < forward.size(); i += step) {
+    const std::int64_t image = matcher.image_cell(forward[i], symmetry.transform);
+    if (image >= 0) seeds.push_back(static_cast<std::uint32_t>(image));
+  }
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  const SymmetricRegion region = symmetric_region(matcher, surface, inverse, seeds, false);
+  return mask_of(region.r_symmetric_cells, surface.cell_count());
+}
+
+}  // namespace
+
+DockingSiteResult find_docking_sites(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                     const DockingSiteOptions& options) {
+  DockingSiteResult result;
+  const VoxelSurface& surface = prepared.surface;
+  if (prepared.model.is_point_cloud() || surface.cell_count() == 0) return result;
+  const CellMatcher matcher(surface, nullptr);
+  const std::size_t count = std::min(options.max_symmetries, symmetries.symmetries.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const DetectedSymmetry& symmetry = symmetries.symmetries[i];
+    for (bool inverse : {false, true}) {
+      const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
+      std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t)
+                                            : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
+      const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
+      const std::size_t before = result.sites.size();
+      ++result.stats.motions;
+      sites_of_motion(context, options, result);
+      for (std::size_t s = before; s < result.sites.size(); ++s) {
+        result.sites[s].symmetry = i;
+        result.sites[s].inverse = inverse;
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace dg

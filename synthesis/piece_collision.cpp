@@ -1,0 +1,150 @@
+#include "synthesis/piece_collision.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <stdexcept>
+
+namespace dg {
+namespace {
+
+// A triangle soup as Embree user geometry (bounds only: the collision query needs no more).
+struct Soup {
+  TriangleMesh mesh;
+  BoundingBox box;
+  RTCScene scene = nullptr;
+};
+
+void triangle_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto* mesh = static_cast<const TriangleMesh*>(args->geometryUserPtr);
+  BoundingBox box;
+  for (const Vec3& p : mesh->corners(args->primID)) box.add(p);
+  RTCBounds* out = args->bounds_o;
+  out->lower_x = static_cast<float>(box.min.x()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.x())));
+  out->lower_y = static_cast<float>(box.min.y()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.y())));
+  out->lower_z = static_cast<float>(box.min.z()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.z())));
+  out->upper_x = static_cast<float>(box.max.x()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.x())));
+  out->upper_y = static_cast<float>(box.max.y()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.y())));
+  out->upper_z = static_cast<float>(box.max.z()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.z())));
+}
+
+RTCScene make_scene(RTCDevice device, const TriangleMesh& mesh) {
+  RTCScene scene = rtcNewScene(device);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mesh.triangles.size()));
+  rtcSetGeometryUserData(geometry, const_cast<TriangleMesh*>(&mesh));
+  rtcSetGeometryBoundsFunction(geometry, triangle_bounds, nullptr);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  return scene;
+}
+
+// Point where segment a-b crosses triangle (p, q, r), if it does (Moller-Trumbore).
+bool segment_hits_triangle(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q, const Vec3& r, Vec3& hit) {
+  const Vec3 d = b - a, e1 = q - p, e2 = r - p;
+  const Vec3 h = d.cross(e2);
+  const double det = e1.dot(h);
+  const double scale = d.norm() * e1.norm() * e2.norm();
+  if (std::abs(det) <= 1e-12 * scale) return false;  // parallel or coplanar
+  const double inv = 1.0 / det;
+  const Vec3 s = a - p;
+  const double u = inv * s.dot(h);
+  if (u < 0.0 || u > 1.0) return false;
+  const Vec3 qv = s.cross(e1);
+  const double v = inv * d.dot(qv);
+  if (v < 0.0 || u + v > 1.0) return false;
+  const double t = inv * e2.dot(qv);
+  if (t < 0.0 || t > 1.0) return false;
+  hit = a + t * d;
+  return true;
+}
+
+struct Query {
+  const TriangleMesh* piece;
+  const TriangleMesh* placed;
+  const std::vector<SeamPlane>* seams;
+  double tolerance;
+  std::atomic<bool> found{false};
+
+  bool near_seam(const Vec3& x) const {
+    for (const SeamPlane& s : *seams)
+      if (std::abs(s.normal.dot(x) - s.offset) <= tolerance) return true;
+    return false;
+  }
+
+  // Any edge of one triangle crossing the other away from the seams.
+  bool crossing(std::size_t a, std::size_t b) const {
+    const auto ta = piece->corners(a), tb = placed->corners(b);
+    Vec3 hit;
+    for (int k = 0; k < 3; ++k) {
+      if (segment_hits_triangle(ta[k], ta[(k + 1) % 3], tb[0], tb[1], tb[2], hit) && !near_seam(hit)) return true;
+      if (segment_hits_triangle(tb[k], tb[(k + 1) % 3], ta[0], ta[1], ta[2], hit) && !near_seam(hit)) return true;
+    }
+    return false;
+  }
+};
+
+void on_collision(void* user, RTCCollision* collisions, unsigned count) {
+  auto* query = static_cast<Query*>(user);
+  for (unsigned i = 0; i < count && !query->found.load(std::memory_order_relaxed); ++i)
+    if (query->crossing(collisions[i].primID0, collisions[i].primID1)) query->found.store(true, std::memory_order_relaxed);
+}
+
+bool boxes_overlap(const BoundingBox& a, const BoundingBox& b, double margin) {
+  for (int k = 0; k < 3; ++k)
+    if (a.min[k] > b.max[k] + margin || b.min[k] > a.max[k] + margin) return false;
+  return true;
+}
+
+}  // namespace
+
+struct PieceCollisions::Impl {
+  RTCDevice device = nullptr;
+  double tolerance = 0.0;
+  std::vector<std::unique_ptr<Soup>> placed;
+};
+
+PieceCollisions::PieceCollisions(double seam_tolerance) : impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) throw std::runtime_error("Embree: cannot create a device");
+  impl_->tolerance = seam_tolerance;
+}
+
+PieceCollisions::~PieceCollisions() {
+  for (auto& soup : impl_->placed)
+    if (soup->scene) rtcReleaseScene(soup->scene);
+  rtcReleaseDevice(impl_->device);
+}
+
+bool PieceCollisions::collides(const TriangleMesh& piece, const std::vector<SeamPlane>& seams) const {
+  if (piece.triangles.empty()) return false;
+  const BoundingBox box = piece.bounds();
+  RTCScene scene = nullptr;
+  bool found = false;
+  for (const auto& soup : impl_->placed) {
+    if (soup->mesh.triangles.empty() || !boxes_overlap(box, soup->box, impl_->tolerance)) continue;
+    if (!scene) scene = make_scene(impl_->device, piece);
+    Query query{&piece, &soup->mesh, &seams, impl_->tolerance};
+    rtcCollide(scene, soup->scene, on_collision, &query);
+    if (query.found.load()) {
+      found = true;
+      break;
+    }
+  }
+  if (scene) rtcReleaseScene(scene);
+  return found;
+}
+
+void PieceCollisions::add(const TriangleMesh& piece) {
+  auto soup = std::make_unique<Soup>();
+  soup->mesh = piece;
+  soup->box = piece.bounds();
+  if (!piece.triangles.empty()) soup->scene = make_scene(impl_->device, soup->mesh);
+  impl_->placed.push_back(std::move(soup));
+}
+
+std::size_t PieceCollisions::pieces() const { return impl_->placed.size(); }
+
+}  // namespace dg
