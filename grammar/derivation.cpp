@@ -5,20 +5,10 @@
 
 #include <cmath>
 #include <string>
-#include <unordered_map>
 
 namespace dg {
 
 namespace {
-
-// Productions grouped by predecessor symbol, in file order.
-using ProductionIndex = std::unordered_map<std::string, std::vector<const Production*>>;
-
-ProductionIndex index_productions(const LSystem& system) {
-  ProductionIndex index;
-  for (const Production& production : system.productions) index[production.predecessor].push_back(&production);
-  return index;
-}
 
 bool applies(const Production& production, const Module& module) {
   if (production.formals.size() != module.parameters.size()) return false;
@@ -66,11 +56,38 @@ void append_successor(const Production& production, const Module& module, std::v
 
 }  // namespace
 
+Rewriter::Rewriter(const LSystem& system) {
+  for (const Production& production : system.productions) by_symbol_[production.predecessor].push_back(&production);
+}
+
+bool Rewriter::step(const std::vector<Module>& modules, Random& random, std::vector<Module>& out,
+                    std::vector<std::size_t>* origins, std::vector<char>* fresh, std::size_t max_modules,
+                    int step) const {
+  std::vector<const Production*> scratch;
+  bool rewrote = false;
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const Module& module = modules[i];
+    const std::size_t before = out.size();
+    const auto candidates = by_symbol_.find(module.symbol);
+    const Production* production =
+        candidates == by_symbol_.end() ? nullptr : choose(candidates->second, module, random, scratch);
+    if (production) {
+      append_successor(*production, module, out);
+      rewrote = true;
+    } else {
+      out.push_back(module);
+    }
+    if (origins) origins->insert(origins->end(), out.size() - before, i);
+    if (fresh) fresh->insert(fresh->end(), out.size() - before, production ? 1 : 0);
+    if (out.size() > max_modules) too_many_modules(max_modules, step);
+  }
+  return rewrote;
+}
+
 Derivation derive(const LSystem& system, const DerivationOptions& options) {
   const std::optional<int> steps = options.steps ? options.steps : system.iterations;
-  const ProductionIndex index = index_productions(system);
+  const Rewriter rewriter(system);
   Random random(options.seed);
-  std::vector<const Production*> scratch;
   Derivation result;
   result.modules = system.axiom;
   if (result.modules.size() > options.limits.max_modules) too_many_modules(options.limits.max_modules, 0);
@@ -80,20 +97,7 @@ Derivation derive(const LSystem& system, const DerivationOptions& options) {
       throw LimitError("derivation still rewrites after " + std::to_string(options.limits.max_steps) +
                        " steps; give a number of iterations (-n) or check the rules for endless recursion");
     next.clear();
-    bool rewrote = false;
-    for (const Module& module : result.modules) {
-      const auto candidates = index.find(module.symbol);
-      const Production* production =
-          candidates == index.end() ? nullptr : choose(candidates->second, module, random, scratch);
-      if (production) {
-        append_successor(*production, module, next);
-        rewrote = true;
-      } else {
-        next.push_back(module);
-      }
-      if (next.size() > options.limits.max_modules) too_many_modules(options.limits.max_modules, step);
-    }
-    if (!rewrote) break;
+    if (!rewriter.step(result.modules, random, next, nullptr, nullptr, options.limits.max_modules, step)) break;
     result.modules.swap(next);
     result.steps = step;
   }

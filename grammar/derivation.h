@@ -2,10 +2,13 @@
 // Derivation: parallel rewriting of a module string by an L-system's productions.
 
 #include "grammar/lsystem.h"
+#include "grammar/random.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace dg {
@@ -28,6 +31,24 @@ struct DerivationOptions {
 struct Derivation {
   std::vector<Module> modules;
   int steps = 0;
+};
+
+/// One parallel rewriting step at a time, for callers that interleave steps with other work
+/// (Open L-systems answer their queries between steps). Keeps a pointer to `system`.
+class Rewriter {
+ public:
+  explicit Rewriter(const LSystem& system);
+
+  /// Rewrites every module of `modules` once (stochastic choices drawn from `random` in string
+  /// order) and appends the result to `out`. When given, `origins` gets for each appended
+  /// module the index in `modules` it comes from, and `fresh` gets 1 for modules made by a
+  /// production and 0 for copies. Returns whether any module was rewritten. Throws LimitError
+  /// beyond `max_modules` (message names `step`) and InputError for non-finite arguments.
+  bool step(const std::vector<Module>& modules, Random& random, std::vector<Module>& out,
+            std::vector<std::size_t>* origins, std::vector<char>* fresh, std::size_t max_modules, int step) const;
+
+ private:
+  std::unordered_map<std::string, std::vector<const Production*>> by_symbol_;
 };
 
 /// Rewrites the axiom step by step; each step rewrites every module in parallel (context-free).

@@ -16,6 +16,8 @@ std::size_t symbol_length(std::string_view text, std::size_t pos) {
   const char c = text[pos];
   const auto byte = static_cast<unsigned char>(c);
   if (byte <= ' ' || byte >= 0x7f || c == '(' || c == ')' || c == ',') return 0;
+  if (text.substr(pos, 3) == "cut" && (pos + 3 == text.size() || !std::isalnum(static_cast<unsigned char>(text[pos + 3]))))
+    return 3;
   std::size_t end = pos + 1;
   if (c == '?') {
     while (end < text.size() && is_letter(text[end])) ++end;
@@ -43,6 +45,7 @@ bool needs_space(std::string_view previous, bool previous_has_arguments, std::st
                  bool next_has_arguments) {
   if (previous == "[" || next == "]") return false;
   if (previous_has_arguments || next_has_arguments || previous.size() != 1 || next.size() != 1) return true;
+  if (previous == "u" && next == "t") return true;  // `c u t` written together would read as `cut`
   return symbol_length(std::string(previous) + std::string(next), 0) != 1;
 }
 

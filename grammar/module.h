@@ -1,8 +1,9 @@
 #pragma once
 // Modules (a symbol with parameter values, e.g. `P(336)` or `F`) and successor items (a symbol
 // with parameter expressions, e.g. `P(m-1)`). Symbols are names: one character (`F`, `+`, `[`),
-// a letter followed by digits (`P0`, `R12`), or a query name `?` + letters (`?X`, reserved for
-// the environment queries of Open L-systems).
+// a letter followed by digits (`P0`, `R12`), a query name `?` + letters (`?X`, reserved for
+// the environment queries of Open L-systems), or the word `cut` (ends a branch, Open L-systems)
+// when no letter or digit follows it.
 
 #include "grammar/expression.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // A 2D drawing made by the turtle: strokes in y-up drawing units.
 
+#include "geometry/image.h"
 #include "synthesis/path2d.h"
 
 #include <cstddef>
@@ -9,10 +10,13 @@
 namespace dg {
 
 /// One drawn element: a segment (drawing symbol) or a placed motif copy, and the index of the
-/// module in the derived string that made it.
+/// module in the derived string that made it; colour and a width factor (times the picture's
+/// line width) for pictures that mix kinds of strokes (e.g. guides under grown structure).
 struct Stroke {
   Path2d path;
   std::size_t module_index = 0;
+  Rgba8 color{0, 0, 0, 255};
+  double width_factor = 1;
 };
 
 /// Strokes in derivation order, in y-up turtle coordinates.

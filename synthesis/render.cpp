@@ -8,6 +8,20 @@
 
 namespace dg {
 
+namespace {
+
+std::string format_svg_color(const Rgba8& color) {
+  static const char* digits = "0123456789abcdef";
+  std::string text = "#";
+  for (const std::uint8_t channel : {color.r, color.g, color.b}) {
+    text += digits[channel >> 4];
+    text += digits[channel & 15];
+  }
+  return text;
+}
+
+}  // namespace
+
 std::string format_svg(const Drawing& drawing, const RenderOptions& options) {
   const PageFrame frame = page_frame(drawing, options.margin_fraction);
   const double long_side = std::max(frame.width, frame.height);
@@ -20,7 +34,11 @@ std::string format_svg(const Drawing& drawing, const RenderOptions& options) {
                     "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   for (const Stroke& stroke : drawing.strokes) {
     const Path2d page = map_path(stroke.path, [&](const Vec2& p) { return frame.to_page(p); });
-    svg += "<path d=\"" + format_svg_path(page, d) + "\"/>\n";
+    svg += "<path d=\"" + format_svg_path(page, d) + "\"";
+    if (stroke.color != Rgba8{0, 0, 0, 255}) svg += " stroke=\"" + format_svg_color(stroke.color) + "\"";
+    if (stroke.width_factor != 1)
+      svg += " stroke-width=\"" + format_svg_number(stroke_width * stroke.width_factor, d + 1) + "\"";
+    svg += "/>\n";
   }
   return svg + "</svg>\n";
 }
@@ -34,7 +52,7 @@ Image rasterize(const Drawing& drawing, const RenderOptions& options) {
   for (const Stroke& stroke : drawing.strokes) {
     const Path2d pixels = map_path(stroke.path, [&](const Vec2& p) { return Vec2(frame.to_page(p) * px_per_unit); });
     for (const std::vector<Vec2>& line : flatten_path(pixels, 2.0))
-      draw_polyline(image, line, options.line_width_px, Rgba8{0, 0, 0, 255});
+      draw_polyline(image, line, options.line_width_px * stroke.width_factor, stroke.color);
   }
   return image;
 }

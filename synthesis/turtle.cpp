@@ -2,25 +2,14 @@
 
 #include "geometry/errors.h"
 #include "grammar/random.h"
+#include "synthesis/segment2d.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace dg {
 
 namespace {
-
-struct TurtleState {
-  Vec2 position = Vec2::Zero();
-  double heading_deg = 0;
-  double scale = 1;
-};
-
-Vec2 direction(double heading_deg) {
-  const double radians = heading_deg * std::numbers::pi / 180.0;
-  return Vec2(std::cos(radians), std::sin(radians));
-}
 
 double argument_or(const Module& module, const std::optional<double>& fallback, std::size_t index,
                    const char* setting) {
@@ -51,39 +40,25 @@ TurtleOptions turtle_options(const TurtleSettings& settings) {
   return options;
 }
 
-Drawing interpret(const std::vector<Module>& modules, const TurtleOptions& options) {
-  Drawing drawing;
+void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
+                 const TurtleVisitor& visitor) {
   Random random(options.seed);
   auto jitter_factor = [&] { return options.jitter_scale > 0 ? 1 + random.uniform(-1, 1) * options.jitter_scale : 1.0; };
   auto jitter_angle = [&] { return options.jitter_angle_deg > 0 ? random.uniform(-1, 1) * options.jitter_angle_deg : 0.0; };
-  TurtleState state;
-  state.heading_deg = options.heading_deg;
-  std::vector<TurtleState> stack;
+  TurtlePose state = start;
+  std::vector<TurtlePose> stack;
   for (std::size_t i = 0; i < modules.size(); ++i) {
     const Module& module = modules[i];
     const std::string& symbol = module.symbol;
     if (const auto motif = options.motifs.find(symbol); motif != options.motifs.end()) {
       const double size = state.scale * jitter_factor();
-      const double radians = state.heading_deg * std::numbers::pi / 180.0;
-      const double c = std::cos(radians) * size, s = std::sin(radians) * size;
-      const Vec2 origin = state.position;
-      drawing.strokes.push_back({map_path(motif->second,
-                                          [&](const Vec2& p) {
-                                            return Vec2(origin.x() + c * p.x() - s * p.y(),
-                                                        origin.y() + s * p.x() + c * p.y());
-                                          }),
-                                 i});
+      if (visitor.motif) visitor.motif(i, motif->second, state, size);
     } else if (symbol == "f" ||
                std::find(options.draw_symbols.begin(), options.draw_symbols.end(), symbol) != options.draw_symbols.end()) {
       const double length = (module.parameters.empty() ? options.step : module.parameters.front()) * state.scale;
-      const Vec2 start = state.position;
-      state.position += direction(state.heading_deg) * length * jitter_factor();
-      if (symbol != "f") {
-        Path2d segment;
-        segment.commands.push_back({PathCommand::Type::Move, {start, Vec2::Zero(), Vec2::Zero()}});
-        segment.commands.push_back({PathCommand::Type::Line, {state.position, Vec2::Zero(), Vec2::Zero()}});
-        drawing.strokes.push_back({std::move(segment), i});
-      }
+      const Vec2 from = state.position;
+      state.position += heading_vector(state.heading_deg) * length * jitter_factor();
+      if (symbol != "f" && visitor.segment) visitor.segment(i, from, state.position);
     } else if (symbol == "+") {
       state.heading_deg += argument_or(module, options.angle_deg, i, "angle") + jitter_angle();
     } else if (symbol == "-") {
@@ -98,9 +73,38 @@ Drawing interpret(const std::vector<Module>& modules, const TurtleOptions& optio
       if (stack.empty()) throw InputError("module " + std::to_string(i) + ": ']' without a matching '['");
       state = stack.back();
       stack.pop_back();
+    } else if (visitor.other) {
+      const double ahead = visitor.other(i, state);
+      if (ahead != 0) state.position += heading_vector(state.heading_deg) * ahead;
     }
   }
+}
+
+Drawing interpret(const std::vector<Module>& modules, const TurtleOptions& options) {
+  Drawing drawing;
+  TurtleVisitor visitor;
+  visitor.segment = [&](std::size_t index, const Vec2& from, const Vec2& to) {
+    Path2d segment;
+    segment.commands.push_back({PathCommand::Type::Move, {from, Vec2::Zero(), Vec2::Zero()}});
+    segment.commands.push_back({PathCommand::Type::Line, {to, Vec2::Zero(), Vec2::Zero()}});
+    drawing.strokes.push_back({std::move(segment), index});
+  };
+  visitor.motif = [&](std::size_t index, const Path2d& motif, const TurtlePose& pose, double size) {
+    drawing.strokes.push_back({place_motif(motif, pose, size), index});
+  };
+  TurtlePose start;
+  start.heading_deg = options.heading_deg;
+  walk_turtle(modules, options, start, visitor);
   return drawing;
+}
+
+Path2d place_motif(const Path2d& motif, const TurtlePose& pose, double size) {
+  const Vec2 axis = heading_vector(pose.heading_deg) * size;
+  const double c = axis.x(), s = axis.y();
+  const Vec2 origin = pose.position;
+  return map_path(motif, [&](const Vec2& p) {
+    return Vec2(origin.x() + c * p.x() - s * p.y(), origin.y() + s * p.x() + c * p.y());
+  });
 }
 
 }  // namespace dg

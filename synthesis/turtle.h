@@ -13,6 +13,7 @@
 #include "synthesis/path2d.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -42,8 +43,35 @@ inline constexpr const char* default_motif = "M 0 0 C 3 6 11 7 16 0 C 11 -3 4 -3
 /// declared otherwise). Throws InputError when a motif's path data is malformed.
 TurtleOptions turtle_options(const TurtleSettings& settings);
 
+/// Where the turtle is: position (y-up drawing units), heading (degrees counter-clockwise) and
+/// the scale that multiplies lengths.
+struct TurtlePose {
+  Vec2 position = Vec2::Zero();
+  double heading_deg = 0;
+  double scale = 1;
+};
+
+/// What walk_turtle reports; every callback may be left empty.
+struct TurtleVisitor {
+  /// A drawing symbol at module `index` drew the segment from -> to.
+  std::function<void(std::size_t index, const Vec2& from, const Vec2& to)> segment;
+  /// A motif symbol at module `index` placed `motif` at `pose`, `size` drawing units per path unit.
+  std::function<void(std::size_t index, const Path2d& motif, const TurtlePose& pose, double size)> motif;
+  /// Module `index` is a symbol the turtle does not act on; returns a distance (drawing units,
+  /// already scaled) the turtle then moves ahead without drawing, usually 0.
+  std::function<double(std::size_t index, const TurtlePose& pose)> other;
+};
+
+/// Walks `modules` from `start` with the rules above (options.heading_deg is not used; the
+/// start pose gives the heading) and reports to `visitor`. Throws like interpret().
+void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
+                 const TurtleVisitor& visitor);
+
 /// Interprets `modules` and returns the strokes in derivation order. Throws InputError when a
 /// `+`, `-` or `*` needs the default angle or scale and there is none, or a `]` has no `[`.
 Drawing interpret(const std::vector<Module>& modules, const TurtleOptions& options);
+
+/// `motif` (turtle frame: x ahead, y left) placed at `pose`, scaled by `size`.
+Path2d place_motif(const Path2d& motif, const TurtlePose& pose, double size);
 
 }  // namespace dg

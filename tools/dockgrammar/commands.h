@@ -14,5 +14,6 @@ void add_generate_command(CLI::App& app);
 void add_lsystem_command(CLI::App& app);
 void add_lsystem_infer_subcommand(CLI::App& lsystem);
 void add_verify_command(CLI::App& app);
+void add_grow_command(CLI::App& app);
 
 }  // namespace dg::cli

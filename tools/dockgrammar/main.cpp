@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   dg::cli::add_generate_command(app);
   dg::cli::add_lsystem_command(app);
   dg::cli::add_verify_command(app);
+  dg::cli::add_grow_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
