@@ -107,8 +107,15 @@ std::optional<Plane> fit_seam(const VoxelSurface& surface, const Node& node, dou
     const Vec3 d = surface.centre(c) - mean;
     covariance += d * d.transpose();
   }
+  // A cut across a pipe or a bar is perpendicular to the walls it crosses: prefer the direction
+  // the band's surface normals leave out; fall back to the flattest direction of the band.
+  Mat3 normals = Mat3::Zero();
+  for (std::uint32_t c : node.site)
+    for (const CellPlane& p : surface.planes(c)) normals += p.normal * p.normal.transpose();
+  const Eigen::SelfAdjointEigenSolver<Mat3> across(normals);
   const Eigen::SelfAdjointEigenSolver<Mat3> solver(covariance);
-  Plane plane{solver.eigenvectors().col(0).normalized(), 0.0};
+  const bool walls_decide = across.eigenvalues()(0) < 0.05 * across.eigenvalues()(1);
+  Plane plane{(walls_decide ? across.eigenvectors().col(0) : solver.eigenvectors().col(0)).normalized(), 0.0};
   plane.offset = plane.normal.dot(mean);
   for (std::uint32_t c : node.site)
     if (std::abs(plane.distance(surface.centre(c))) > flatness) return std::nullopt;

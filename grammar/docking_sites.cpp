@@ -3,7 +3,11 @@
 #include "symmetry/slippage.h"
 #include "symmetry/symmetric_region.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -259,22 +263,44 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
   const VoxelSurface& surface = prepared.surface;
   if (prepared.model.is_point_cloud() || surface.cell_count() == 0) return result;
   const CellMatcher matcher(surface, nullptr);
-  const std::size_t count = std::min(options.max_symmetries, symmetries.symmetries.size());
-  for (std::size_t i = 0; i < count; ++i) {
-    const DetectedSymmetry& symmetry = symmetries.symmetries[i];
-    for (bool inverse : {false, true}) {
-      const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
-      std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t)
-                                            : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
-      const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
-      const std::size_t before = result.sites.size();
-      ++result.stats.motions;
-      sites_of_motion(context, options, result);
-      for (std::size_t s = before; s < result.sites.size(); ++s) {
-        result.sites[s].symmetry = i;
-        result.sites[s].inverse = inverse;
-      }
+  // One member per family, the smallest power found: higher powers (2t, 3t, ...) repeat its
+  // operations.
+  std::vector<int> smallest_power(symmetries.families.size(), std::numeric_limits<int>::max());
+  for (const DetectedSymmetry& s : symmetries.symmetries)
+    if (s.family < smallest_power.size()) smallest_power[s.family] = std::min(smallest_power[s.family], std::abs(s.power));
+  std::vector<std::size_t> chosen;
+  std::vector<char> family_taken(symmetries.families.size(), 0);
+  for (std::size_t i = 0; i < symmetries.symmetries.size() && chosen.size() < options.max_symmetries; ++i) {
+    const DetectedSymmetry& s = symmetries.symmetries[i];
+    if (s.family < family_taken.size()) {
+      if (family_taken[s.family] || std::abs(s.power) != smallest_power[s.family]) continue;
+      family_taken[s.family] = 1;
     }
+    chosen.push_back(i);
+  }
+  // Each motion (symmetry and direction) is independent: computed in parallel, joined in order.
+  std::vector<DockingSiteResult> per_motion(2 * chosen.size());
+  tbb::parallel_for(std::size_t(0), per_motion.size(), [&](std::size_t m) {
+    const std::size_t i = chosen[m / 2];
+    const bool inverse = m % 2 == 1;
+    const DetectedSymmetry& symmetry = symmetries.symmetries[i];
+    const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
+    std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t)
+                                          : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
+    const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
+    DockingSiteResult& local = per_motion[m];
+    local.stats.motions = 1;
+    sites_of_motion(context, options, local);
+    for (DockingSite& site : local.sites) {
+      site.symmetry = i;
+      site.inverse = inverse;
+    }
+  });
+  for (DockingSiteResult& local : per_motion) {
+    result.stats.motions += local.stats.motions;
+    result.stats.regions += local.stats.regions;
+    result.stats.invalid += local.stats.invalid;
+    for (DockingSite& site : local.sites) result.sites.push_back(std::move(site));
   }
   return result;
 }

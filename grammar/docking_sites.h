@@ -28,7 +28,9 @@ enum class OperationKind { insert, remove, replace };
 std::string operation_name(OperationKind kind);
 
 struct DockingSiteOptions {
-  std::size_t max_symmetries = 24;  ///< symmetries examined (largest r-symmetric area first)
+  /// Symmetries examined, largest r-symmetric area first, one per repetition family (its
+  /// smallest power found): powers of a generator (2t, 3t, ...) only repeat its operations.
+  std::size_t max_symmetries = 24;
   double containment = 0.9;         ///< share of cells that makes one docker "inside" another
   int max_merge_rounds = 4;         ///< dependent-region merges tried before giving up
   /// Sites whose band slides in this many independent rigid motions or more are slippable
@@ -66,7 +68,8 @@ struct DockingSiteResult {
   DockingSiteStats stats;
 };
 
-/// Elementary docking sites of the top symmetries of a prepared mesh. Deterministic.
+/// Elementary docking sites of the top symmetries of a prepared mesh. Parallel over motions
+/// (TBB) and deterministic for any thread count.
 DockingSiteResult find_docking_sites(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                      const DockingSiteOptions& options = {});
 

@@ -46,6 +46,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     const TriangleMesh piece = transformed(p.terminal, world);
     collisions.add(piece);
     append_mesh(result.mesh, piece);
+    if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
     triangles += piece.triangles.size();
     for (const ChildSlot& c : p.children) open.push_back({c, world.after(c.placement), depth + 1});
   };
@@ -78,7 +79,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     result.productions.push_back(chosen);
     place(grammar.productions[chosen], slot.world, slot.depth);
   }
-  resolve_t_junctions(result.mesh, 1e-6 * eps);
+  if (options.weld_seams) resolve_t_junctions(result.mesh, 1e-6 * eps);
   return result;
 }
 

@@ -21,6 +21,7 @@ struct ShapeDerivationOptions {
   std::size_t max_triangles = 5'000'000;     ///< placed triangles before only exemplar productions are used
   bool exemplar_only = false;                ///< always take the exemplar's production (rebuilds the exemplar)
   double seam_tolerance = 0.0;               ///< model units; 0 = the grammar's eps
+  bool weld_seams = true;                    ///< false: pieces stay separate (for pictures)
 };
 
 struct ShapeDerivation {
@@ -30,6 +31,9 @@ struct ShapeDerivation {
   std::size_t fallbacks = 0;                ///< slots that got the exemplar production after `retries` failures
   bool depth_limited = false;               ///< max_depth was reached somewhere
   bool triangle_limited = false;            ///< max_triangles was reached
+  /// Without welding: the non-terminal whose production placed each triangle (kNoProduction
+  /// for the axiom's terminal). Empty when the seams were welded.
+  std::vector<std::size_t> triangle_nonterminal;
 };
 
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:

@@ -7,6 +7,7 @@
 #include "geometry/topology.h"
 #include "support/mesh_distance.h"
 #include "synthesis/shape_derivation.h"
+#include "synthesis/verify.h"
 
 #include <catch2/catch.hpp>
 
@@ -110,4 +111,25 @@ TEST_CASE("context-free grammar survives the grammar file", "[grammar][context_f
     CHECK(std::string(e.what()).find("N999") != std::string::npos);
   }
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("20 random pipe-tree variants: closed, no self-intersections, verify passes", "[grammar][context_free][verify]") {
+  const Analysed a = analyse("pipe_tree", {{"depth", 3}});
+  REQUIRE_FALSE(a.grammar.empty());
+  std::set<std::size_t> sizes;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    dg::ShapeDerivationOptions options;
+    options.seed = seed;
+    const dg::ShapeDerivation d = dg::derive_shape(a.grammar, a.prepared.surface.eps(), options);
+    sizes.insert(d.mesh.triangles.size());
+    dg::Model exemplar, candidate;
+    exemplar.mesh = a.prepared.model.mesh;
+    candidate.mesh = d.mesh;
+    const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(candidate));
+    INFO("seed " << seed << ": " << report.similarity.similar << " of " << report.similarity.samples << " samples r-similar");
+    CHECK(report.candidate.closed);
+    CHECK_FALSE(report.candidate.self_intersects);
+    CHECK(report.pass);
+  }
+  CHECK(sizes.size() >= 3);  // trees of different sizes
 }

@@ -1,4 +1,5 @@
 #include "synthesis/variants.h"
+#include "synthesis/verify.h"
 
 #include "assets/generator/asset.h"
 #include "geometry/errors.h"
@@ -38,7 +39,7 @@ std::string file_bytes(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("variants: seeded, independent of batch position, closed, matching the generator", "[synthesis][variants]") {
+TEST_CASE("facade variants: seeded, independent of batch position, closed, verified, matching the generator", "[synthesis][variants]") {
   const dg::ShapeGrammar grammar = facade_grammar();
   REQUIRE(grammar.grids.size() == 1);
   // Variant i depends only on (grammar, seed, i).
@@ -52,6 +53,12 @@ TEST_CASE("variants: seeded, independent of batch position, closed, matching the
     previous = plan.grid_counts.front();
     const dg::TriangleMesh mesh = dg::build_variant(grammar, plan).mesh;
     CHECK(dg::is_closed_and_oriented(mesh));
+    dg::Model exemplar, candidate;
+    exemplar.mesh = grammar.exemplar;
+    candidate.mesh = mesh;
+    const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(candidate));
+    CHECK_FALSE(report.candidate.self_intersects);
+    CHECK(report.pass);
     if (i < 3) {
       // A variant with counts (c, m) is the generator's facade(c, m).
       const auto& counts = plan.grid_counts.front();

@@ -1,10 +1,11 @@
-// `dockgrammar analyze MODEL`: symmetries, grid rules, the grammar file, a report and pictures.
-// Context-free rules from docking sites are not built yet; the report says so.
+// `dockgrammar analyze MODEL`: symmetries, grid rules, docking sites, context-free rules, the grammar
+// file, a report and pictures.
 
 #include "tools/dockgrammar/commands.h"
 #include "tools/dockgrammar/grammar_report.h"
 #include "tools/dockgrammar/model_options.h"
 
+#include "geometry/stopwatch.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
@@ -13,7 +14,6 @@
 
 #include <fmt/core.h>
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 
@@ -23,12 +23,15 @@ void add_analyze_command(CLI::App& app) {
   struct Options {
     ModelOptions model;
     std::string output = ".";
+    std::uint64_t seed = 1;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "analyze", "Find the symmetries and grid rules of a model; write NAME.grammar.json, NAME.report.md and pictures");
   add_model_options(*command, options->model);
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
+      ->capture_default_str();
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
@@ -37,7 +40,8 @@ void add_analyze_command(CLI::App& app) {
       throw InputError(options->model.model_path + ": analyze needs a mesh; point clouds are supported by info and symmetry");
     const SymmetryResult symmetries = detect_symmetries(prepared, {}, progress);
 
-    const auto start = std::chrono::steady_clock::now();
+    Stopwatch stopwatch;
+    std::vector<StageTiming> grammar_timings;
     ShapeGrammar grammar;
     grammar.source_name = std::filesystem::path(options->model.model_path).filename().string();
     grammar.source_hash = file_hash(options->model.model_path);
@@ -48,10 +52,15 @@ void add_analyze_command(CLI::App& app) {
       std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
+    grammar_timings.push_back({"grid rules", stopwatch.lap()});
+    if (progress) progress("docking sites", 0.0);
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries);
-    ContextFreeStats cf_stats;
-    grammar.context_free = build_context_free_grammar(prepared, docking, {}, &cf_stats);
-    const double grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    grammar_timings.push_back({"docking sites", stopwatch.lap()});
+    if (progress) progress("context-free rules", 0.0);
+    ContextFreeOptions cf_options;
+    cf_options.seed = options->seed;
+    grammar.context_free = build_context_free_grammar(prepared, docking, cf_options);
+    grammar_timings.push_back({"context-free rules", stopwatch.lap()});
 
     const std::filesystem::path folder(options->output);
     std::error_code error;
@@ -60,7 +69,7 @@ void add_analyze_command(CLI::App& app) {
     std::string stem = std::filesystem::path(options->model.model_path).stem().string();
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
-    AnalysisReport report{prepared, symmetries, grammar, docking, grid_seconds, grammar_path};
+    AnalysisReport report{prepared, symmetries, grammar, docking, grammar_timings, grammar_path};
     write_analysis_report(folder / (stem + ".report.md"), report);
     write_analysis_pictures(folder, stem, report);
     if (options->model.json)

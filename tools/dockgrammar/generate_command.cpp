@@ -5,7 +5,9 @@
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/render_mesh.h"
 #include "synthesis/shape_derivation.h"
+#include "tools/dockgrammar/pictures.h"
 #include "synthesis/variants.h"
 
 #include <fmt/core.h>
@@ -30,6 +32,7 @@ void add_generate_command(CLI::App& app) {
     std::string rules = "auto";
     int max_depth = 24;
     std::size_t max_triangles = 5'000'000;
+    bool pictures = false;
     bool quiet = false;
   };
   auto options = std::make_shared<Options>();
@@ -53,6 +56,7 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--max-triangles", options->max_triangles,
                       "Context-free: after this many triangles every slot gets the exemplar's production")
       ->capture_default_str();
+  command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
@@ -77,6 +81,8 @@ void add_generate_command(CLI::App& app) {
       const TriangleMesh& mesh = variant.mesh;
       const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
       write_mesh(folder / file, mesh);
+      if (options->pictures)
+        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, {}, {}, picture_options(grammar.exemplar));
       nlohmann::json grids = nlohmann::json::object();
       for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
       const ShapeDerivation& d = variant.derivation;

@@ -2,6 +2,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
@@ -34,7 +35,7 @@ nlohmann::json timings_json(const AnalysisReport& report) {
   nlohmann::json timings = nlohmann::json::object();
   for (const StageTiming& t : report.prepared.timings) timings[t.stage] = t.seconds;
   for (const StageTiming& t : report.symmetries.timings) timings["symmetry " + t.stage] = t.seconds;
-  timings["grid rules"] = report.grid_seconds;
+  for (const StageTiming& t : report.grammar_timings) timings[t.stage] = t.seconds;
   return timings;
 }
 
@@ -203,6 +204,30 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
   write_file_atomically(path, [&](std::ostream& out) { out << md; }, false);
 }
 
+namespace {
+
+// NAME.rules.png/.ply: the exemplar rebuilt from its own productions, each piece coloured by
+// the non-terminal it fills (the axiom's terminal light grey), like the paper's Figure 8.
+void write_rules_picture(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report) {
+  const ContextFreeGrammar& cf = report.grammar.context_free;
+  if (cf.empty()) return;
+  ShapeDerivationOptions options;
+  options.exemplar_only = true;
+  options.weld_seams = false;
+  const ShapeDerivation d = derive_shape(cf, report.grammar.eps, options);
+  std::vector<Rgba8> colors(d.mesh.triangles.size());
+  std::vector<Rgb> vertex_colors(d.mesh.positions.size());
+  for (std::size_t t = 0; t < colors.size(); ++t) {
+    const std::size_t n = d.triangle_nonterminal[t];
+    colors[t] = n == kNoProduction ? Rgba8{215, 215, 215, 255} : class_color(n);
+    for (std::uint32_t v : d.mesh.triangles[t]) vertex_colors[v] = {colors[t].r, colors[t].g, colors[t].b};
+  }
+  write_mesh(folder / (stem + ".rules.ply"), d.mesh, &vertex_colors);
+  write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {}, picture_options(report.prepared.model.mesh));
+}
+
+}  // namespace
+
 void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report) {
   const TriangleMesh& mesh = report.prepared.model.mesh;
   for (const GridWithPieces& grid : report.grammar.grids) {
@@ -229,6 +254,7 @@ void write_analysis_pictures(const std::filesystem::path& folder, const std::str
     write_mesh(folder / (stem + "." + grid.rule.name + ".ply"), cut, &vertex_colors);
     write_mesh_picture(folder / (stem + "." + grid.rule.name + ".png"), cut, colors, {}, picture_options(mesh));
   }
+  write_rules_picture(folder, stem, report);
 }
 
 }  // namespace dg::cli

@@ -18,7 +18,7 @@ struct AnalysisReport {
   const SymmetryResult& symmetries;
   const ShapeGrammar& grammar;
   const DockingSiteResult& docking;
-  double grid_seconds = 0.0;
+  std::vector<StageTiming> grammar_timings;  ///< grid rules, docking sites, context-free rules
   std::filesystem::path grammar_path;
 };
 
