@@ -119,7 +119,8 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
     const TurtleParameters parameters = estimate_turtle_parameters(tree);
     for (bool descending : {false, true}) {
       TurtleString string = tree_turtle_string(tree, parameters, descending);
-      if (!string.expressible || string.worst_turn_error_deg > options.max_turn_error_deg ||
+      const double turn_limit = std::min(options.max_turn_error_deg, 0.4 * parameters.angle_deg.value_or(90));
+      if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)
         return;
       CompactGrammar grammar = compact_turtle_string(string.text, options.max_block);
@@ -149,7 +150,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   std::ostringstream text;
   text << "# inferred from " << segments.size() << " segments: instance tree and repeated-block compaction (Guo et al. 2020)\n";
   text << "axiom: " << best->grammar.axiom << "\n";
-  if (best->parameters.angle_deg) text << "angle: " << rounded_text(*best->parameters.angle_deg, 2) << "\n";
+  if (best->string.angle_deg) text << "angle: " << rounded_text(*best->string.angle_deg, 2) << "\n";
   if (best->parameters.scale) text << "scale: " << rounded_text(*best->parameters.scale, 4) << "\n";
   text << "step: " << rounded_text(best->string.step, 4) << "\n";
   if (rounded_text(best->string.heading_deg, 2) != "0") text << "heading: " << rounded_text(best->string.heading_deg, 2) << "\n";

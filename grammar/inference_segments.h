@@ -17,7 +17,7 @@ namespace dg {
 struct SegmentInferenceOptions {
   double join_fraction = 1e-4;      ///< end points closer than this fraction of the diagonal are joined
   int max_roots = 12;               ///< candidate roots tried (each in both directions when undirected)
-  double max_turn_error_deg = 6;    ///< a tree whose turns miss multiples of δ by more is rejected
+  double max_turn_error_deg = 6;    ///< a tree whose turns miss multiples of δ by more (or by 0.4 δ) is rejected
   double max_length_error = 0.2;    ///< ... or whose lengths miss step * s^j by more (relative)
   std::size_t max_block = 200;      ///< longest rule successor tried
 };

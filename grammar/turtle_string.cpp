@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <numeric>
 
 namespace dg {
@@ -87,6 +88,22 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
       scale_steps[c] = std::max(0, j);
       exponent[c] = exponent[p] + scale_steps[c];
     }
+  std::vector<int> summed(n, 0);
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t c : tree.children[p]) summed[c] = summed[p] + turn_steps[c];
+  if (delta > 0) {
+    const double root_heading = heading_of(tree.nodes.front());
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (int k = -500; k <= 500; ++k) {
+      const double candidate = delta + 0.01 * k;
+      double cost = 0;
+      for (std::size_t v = 0; v < n; ++v) {
+        const double r = wrap_degrees(heading_of(tree.nodes[v]) - root_heading - summed[v] * candidate);
+        cost += r * r;
+      }
+      if (cost < best_cost) best_cost = cost, result.angle_deg = candidate;
+    }
+  }
   double total = 0;
   for (std::size_t v = 0; v < n; ++v) total += length_of(tree.nodes[v]) / std::exp(exponent[v] * log_scale);
   result.step = total / static_cast<double>(n);

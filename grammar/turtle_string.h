@@ -28,6 +28,7 @@ TurtleParameters estimate_turtle_parameters(const InstanceTree& tree);
 /// The turtle string of a tree and how well it fits.
 struct TurtleString {
   std::string text;               ///< one character per symbol: F + - [ ] *
+  std::optional<double> angle_deg;  ///< δ refined on the absolute headings (see tree_turtle_string)
   double step = 0;                ///< length of F at scale 1, drawing units (mean over nodes)
   double heading_deg = 0;         ///< heading of the root segment, degrees counter-clockwise
   double worst_turn_error_deg = 0;  ///< largest |turn - k δ| over the links
@@ -35,6 +36,9 @@ struct TurtleString {
   bool expressible = true;          ///< false when a link grows the length (needs a `/`)
 };
 
+/// Every node's heading should be the root's plus K δ, K its summed turn steps; δ is refined by
+/// a search within ±5 degrees of the estimate (0.01 degree steps) for the least squared heading
+/// residuals, which does not add up pixel errors along long chains as turns do.
 /// Writes the tree depth first: a node is its turn (`+` or `-` repeated k times for k δ), its
 /// scale change (`*` repeated j times for s^j), then `F`; its children follow, each in brackets
 /// except the one with the largest subtree, which continues the branch unbracketed and comes

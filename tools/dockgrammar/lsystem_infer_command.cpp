@@ -1,13 +1,15 @@
-// `dockgrammar lsystem infer INPUT.svg`: infer an L-system from a vector drawing (Št'ava et al.
-// 2010), print it and write it.
+// `dockgrammar lsystem infer INPUT.svg|INPUT.png`: infer an L-system from a vector drawing or a
+// pixel image (Št'ava et al. 2010, Guo et al. 2020), print it and write it.
 
 #include "tools/dockgrammar/commands.h"
 
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
+#include "geometry/png_reader.h"
 #include "geometry/svg_reader.h"
 #include "grammar/grammar_length.h"
 #include "grammar/inference_drawing.h"
+#include "grammar/inference_pixels.h"
 #include "grammar/lsystem_json.h"
 
 #include <fmt/core.h>
@@ -16,6 +18,7 @@
 #include <cctype>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace dg::cli {
@@ -36,7 +39,9 @@ std::string extension_of(const std::string& path) {
 }
 
 void run_infer(const InferOptions& options) {
-  if (extension_of(options.input) != ".svg") throw InputError(options.input + ": vector inference reads .svg files");
+  const std::string input_extension = extension_of(options.input);
+  if (input_extension != ".svg" && input_extension != ".png")
+    throw InputError(options.input + ": lsystem infer reads .svg (vector) or .png (pixel) files");
   if (!options.output.empty()) {
     const std::string extension = extension_of(options.output);
     if (extension != ".ls" && extension != ".json") throw InputError(options.output + ": the output must end in .ls or .json");
@@ -44,12 +49,26 @@ void run_infer(const InferOptions& options) {
     if (std::filesystem::equivalent(options.input, options.output, ignored))
       throw InputError(options.output + ": refusing to overwrite the input");
   }
-  const SvgDrawing drawing = read_svg(options.input);
   InferredLSystem inferred;
-  try {
-    inferred = infer_drawing_lsystem(drawing, options.inference);
-  } catch (const InputError& error) {
-    throw InputError(options.input + ": " + error.what());
+  std::optional<PixelFrontEnd> front_end;
+  if (input_extension == ".svg") {
+    const SvgDrawing drawing = read_svg(options.input);
+    try {
+      inferred = infer_drawing_lsystem(drawing, options.inference);
+    } catch (const InputError& error) {
+      throw InputError(options.input + ": " + error.what());
+    }
+  } else {
+    const Image image = read_png(options.input);
+    PixelInferenceOptions pixel;
+    pixel.drawing = options.inference;
+    try {
+      PixelInference result = infer_pixel_lsystem(image, pixel);
+      inferred = std::move(result.inferred);
+      front_end = result.front_end;
+    } catch (const InputError& error) {
+      throw InputError(options.input + ": " + error.what());
+    }
   }
   nlohmann::ordered_json json = lsystem_to_json(inferred.lsystem);
   json["grammar_length"] = grammar_length(inferred.lsystem);
@@ -61,6 +80,11 @@ void run_infer(const InferOptions& options) {
   json["timings_s"] = {{"instancing", inferred.timings.instancing_s},
                        {"rules", inferred.timings.rules_s},
                        {"total", inferred.timings.total_s}};
+  if (front_end)
+    json["pixels"] = {{"ink", front_end->ink_pixels},         {"skeleton", front_end->skeleton_pixels},
+                      {"nodes", front_end->nodes},            {"chains", front_end->chains},
+                      {"pieces", front_end->pieces},          {"components", front_end->components},
+                      {"front_end_s", front_end->seconds}};
   if (!options.output.empty()) {
     const bool as_json = extension_of(options.output) == ".json";
     write_file_atomically(options.output, [&](std::ostream& out) { out << (as_json ? json.dump(2) + "\n" : inferred.text); }, false);
@@ -75,9 +99,10 @@ void add_lsystem_infer_subcommand(CLI::App& lsystem) {
   auto options = std::make_shared<InferOptions>();
   CLI::App* command = lsystem.add_subcommand(
       "infer",
-      "Infer an L-system from a vector drawing (each SVG element one atomic element; Št'ava et al. 2010).\n"
+      "Infer an L-system from a vector drawing (each SVG element one atomic element; Št'ava et al. 2010 and Guo et al. 2020)\n"
+      "or from a PNG image of dark strokes on a light background (skeleton, stroke graph, then the same inference).\n"
       "Example: dockgrammar lsystem infer helix.svg -o helix.ls && dockgrammar lsystem derive helix.ls -o helix.png");
-  command->add_option("INPUT", options->input, "vector drawing (.svg)")->required()->check(CLI::ExistingFile);
+  command->add_option("INPUT", options->input, "vector drawing (.svg) or image (.png)")->required()->check(CLI::ExistingFile);
   command->add_option("-o,--output", options->output, "write the L-system here: OUT.ls (text form) or OUT.json");
   command->add_flag("--json", options->json, "print the JSON form with grammar_length, start_svg and timings_s");
   ImportanceWeights& w = options->inference.vector.clusters.weights;
