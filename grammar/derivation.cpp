@@ -60,13 +60,13 @@ Rewriter::Rewriter(const LSystem& system) {
   for (const Production& production : system.productions) by_symbol_[production.predecessor].push_back(&production);
 }
 
-bool Rewriter::step(const std::vector<Module>& modules, Random& random, std::vector<Module>& out,
+bool Rewriter::step(std::vector<Module>& modules, Random& random, std::vector<Module>& out,
                     std::vector<std::size_t>* origins, std::vector<char>* fresh, std::size_t max_modules,
                     int step) const {
   std::vector<const Production*> scratch;
   bool rewrote = false;
   for (std::size_t i = 0; i < modules.size(); ++i) {
-    const Module& module = modules[i];
+    Module& module = modules[i];
     const std::size_t before = out.size();
     const auto candidates = by_symbol_.find(module.symbol);
     const Production* production =
@@ -75,7 +75,7 @@ bool Rewriter::step(const std::vector<Module>& modules, Random& random, std::vec
       append_successor(*production, module, out);
       rewrote = true;
     } else {
-      out.push_back(module);
+      out.push_back(std::move(module));
     }
     if (origins) origins->insert(origins->end(), out.size() - before, i);
     if (fresh) fresh->insert(fresh->end(), out.size() - before, production ? 1 : 0);
@@ -97,8 +97,9 @@ Derivation derive(const LSystem& system, const DerivationOptions& options) {
       throw LimitError("derivation still rewrites after " + std::to_string(options.limits.max_steps) +
                        " steps; give a number of iterations (-n) or check the rules for endless recursion");
     next.clear();
-    if (!rewriter.step(result.modules, random, next, nullptr, nullptr, options.limits.max_modules, step)) break;
-    result.modules.swap(next);
+    const bool rewrote = rewriter.step(result.modules, random, next, nullptr, nullptr, options.limits.max_modules, step);
+    result.modules.swap(next);  // also when nothing was rewritten: the modules were moved to `next`
+    if (!rewrote) break;
     result.steps = step;
   }
   return result;

@@ -40,11 +40,12 @@ class Rewriter {
   explicit Rewriter(const LSystem& system);
 
   /// Rewrites every module of `modules` once (stochastic choices drawn from `random` in string
-  /// order) and appends the result to `out`. When given, `origins` gets for each appended
+  /// order) and appends the result to `out`; modules copied unchanged are moved out of
+  /// `modules` (it is left for the caller to discard). When given, `origins` gets for each appended
   /// module the index in `modules` it comes from, and `fresh` gets 1 for modules made by a
   /// production and 0 for copies. Returns whether any module was rewritten. Throws LimitError
   /// beyond `max_modules` (message names `step`) and InputError for non-finite arguments.
-  bool step(const std::vector<Module>& modules, Random& random, std::vector<Module>& out,
+  bool step(std::vector<Module>& modules, Random& random, std::vector<Module>& out,
             std::vector<std::size_t>* origins, std::vector<char>* fresh, std::size_t max_modules, int step) const;
 
  private:

@@ -50,9 +50,10 @@ Derivation derive_open(const LSystem& system, QueryEnvironment& environment, con
                        " steps (derivation limit); check the rules for endless growth");
     next.clear();
     next_fresh.clear();
-    if (!rewriter.step(result.modules, random, next, nullptr, &next_fresh, options.limits.max_modules, step)) break;
-    apply_cuts(next, nullptr, &next_fresh);
-    result.modules.swap(next);
+    const bool rewrote = rewriter.step(result.modules, random, next, nullptr, &next_fresh, options.limits.max_modules, step);
+    result.modules.swap(next);  // also when nothing was rewritten: the modules were moved to `next`
+    if (!rewrote) break;
+    apply_cuts(result.modules, nullptr, &next_fresh);
     fresh.swap(next_fresh);
     result.steps = step;
   }

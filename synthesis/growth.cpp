@@ -30,15 +30,33 @@ struct PendingSeed {
   auto key() const { return std::tie(step, received, order, t); }
 };
 
-// One seed's string while it grows.
+// A kept element of a run: the module that drew it and its index in the guide's grid (segments)
+// or its shape (motifs).
+struct DrawnSegment {
+  std::size_t module = 0;
+  std::size_t id = 0;
+};
+struct DrawnMotif {
+  std::size_t module = 0;
+  Path2d path;
+};
+
+// One seed's string while it grows, with what its last interpretation found: kept elements in
+// module order, and for every `[` its matching `]` and the pose before it, so that unchanged
+// branches at unchanged poses are not walked again.
 struct SeedRun {
   SeedStart start;
   std::vector<Module> modules;
   std::vector<char> fresh;
+  std::vector<std::size_t> origins;  // module -> index before the last rewrite (empty: new run)
   bool active = true;
   bool dirty = true;
-  std::vector<GridSegment> segments;  // kept elements of the last interpretation
-  std::vector<Path2d> motifs;
+  std::vector<DrawnSegment> segments;
+  std::vector<DrawnMotif> motifs;
+  std::vector<std::size_t> frozen_segments;  // grid ids of elements of branches taken out (freeze)
+  std::vector<Path2d> frozen_motifs;
+  std::vector<std::size_t> match;     // `[` -> its `]` (npos elsewhere)
+  std::vector<TurtlePose> poses;      // `[` -> the pose before it
   std::vector<std::pair<std::size_t, TurtlePose>> queries;  // fresh query modules and where they are
 };
 
@@ -63,6 +81,8 @@ struct GuideRunner {
   GuideEnvironment environment;
   std::vector<SeedRun> runs;
   std::vector<ReceivedSeed> received;
+  std::vector<std::size_t> provisional;  // grid ids of segments that ?X added in the last answer phase
+  std::size_t laid_out = 0;              // live segments when the grid's cells were last laid out
   Vec2 low = Vec2::Zero(), high = Vec2::Zero();
 };
 
@@ -100,6 +120,8 @@ class Growth {
       }
       runner.environment.polygon = &guide.polygon;
       runner.environment.elements = &runner.grid;
+      const Vec2 margin = 0.1 * (runner.high - runner.low);
+      runner.grid.reset(runner.low - margin, runner.high + margin, 0, 0);
       if (!grows[g] || !guide.lsystem) continue;
       runner.system = &scene.lsystems[*guide.lsystem].system;
       runner.rewriter = std::make_unique<Rewriter>(*runner.system);
@@ -153,8 +175,10 @@ class Growth {
       ++result.regrown_guides;
       GuideGrowth& out = result.guides[g];
       for (const SeedRun& run : guides_[g].runs) {
-        out.segments.insert(out.segments.end(), run.segments.begin(), run.segments.end());
-        out.motifs.insert(out.motifs.end(), run.motifs.begin(), run.motifs.end());
+        for (std::size_t id : run.frozen_segments) out.segments.push_back(guides_[g].grid[id]);
+        for (const DrawnSegment& segment : run.segments) out.segments.push_back(guides_[g].grid[segment.id]);
+        out.motifs.insert(out.motifs.end(), run.frozen_motifs.begin(), run.frozen_motifs.end());
+        for (const DrawnMotif& motif : run.motifs) out.motifs.push_back(motif.path);
       }
       out.received = guides_[g].received;
       out.seeds = guides_[g].runs.size();
@@ -205,25 +229,171 @@ class Growth {
     runner.runs.push_back(std::move(run));
   }
 
+  // Walks the run's string and updates its kept elements in the guide's grid. A `[` that was
+  // copied unchanged together with its whole branch, at the same pose as before, is skipped:
+  // its elements are taken over (drawn by the same modules at the same poses, they are equal).
   void interpret(GuideRunner& runner, SeedRun& run) {
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    const std::vector<Vec2>& polygon = runner.guide->polygon;
+    const std::size_t n = run.modules.size();
+    std::vector<DrawnSegment> old_segments = std::move(run.segments);
+    std::vector<DrawnMotif> old_motifs = std::move(run.motifs);
+    std::vector<std::size_t> old_match = std::move(run.match);
+    std::vector<TurtlePose> old_poses = std::move(run.poses);
+    std::vector<char> reused(old_segments.size(), 0);
     run.segments.clear();
     run.motifs.clear();
     run.queries.clear();
-    const std::vector<Vec2>& polygon = runner.guide->polygon;
+    run.match.assign(n, none);
+    run.poses.resize(n);
+    std::vector<std::size_t> fresh_before(n + 1, 0);  // fresh modules before index k
+    for (std::size_t k = 0; k < n; ++k) fresh_before[k + 1] = fresh_before[k] + (run.fresh[k] ? 1 : 0);
+    std::vector<std::size_t> open;  // `[` not closed yet
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::string& symbol = run.modules[k].symbol;
+      if (symbol == "[") {
+        open.push_back(k);
+      } else if (symbol == "]" && !open.empty()) {
+        run.match[open.back()] = k;
+        open.pop_back();
+      }
+    }
+    auto by_module = [](const auto& element, std::size_t module) { return element.module < module; };
+
     TurtleVisitor visitor;
-    visitor.segment = [&](std::size_t, const Vec2& from, const Vec2& to) {
-      if (point_in_polygon(0.5 * (from + to), polygon)) run.segments.push_back({from, to, run.start.element_id});
+    visitor.branch = [&](std::size_t k, const TurtlePose& pose) -> std::size_t {
+      run.poses[k] = pose;
+      if (!run.origins.empty() && !run.fresh[k]) {
+        const std::size_t i = run.origins[k];
+        const std::size_t j = i < old_match.size() ? old_match[i] : none;
+        if (j != none && k + (j - i) < n && run.origins[k + (j - i)] == j && fresh_before[k + (j - i) + 1] == fresh_before[k] &&
+            old_poses[i].position == pose.position && old_poses[i].heading_deg == pose.heading_deg &&
+            old_poses[i].scale == pose.scale) {
+          const std::size_t shift = k - i;  // new index = old index + shift inside the branch
+          auto first = std::lower_bound(old_segments.begin(), old_segments.end(), i, by_module);
+          for (auto it = first; it != old_segments.end() && it->module <= j; ++it) {
+            run.segments.push_back({it->module + shift, it->id});
+            reused[static_cast<std::size_t>(it - old_segments.begin())] = 1;
+          }
+          auto motif = std::lower_bound(old_motifs.begin(), old_motifs.end(), i, by_module);
+          for (; motif != old_motifs.end() && motif->module <= j; ++motif)
+            run.motifs.push_back({motif->module + shift, std::move(motif->path)});
+          for (std::size_t m = i; m <= j; ++m)
+            if (old_match[m] != none) run.poses[m + shift] = old_poses[m];
+          return k + (j - i) + 1;
+        }
+      }
+      return k;
     };
-    visitor.motif = [&](std::size_t, const Path2d& motif, const TurtlePose& pose, double size) {
-      if (point_in_polygon(pose.position, polygon)) run.motifs.push_back(place_motif(motif, pose, size));
+    // A copied drawing module that draws exactly its old segment keeps it (old segments are in
+    // module order and origins grow with k, so one cursor finds them).
+    std::size_t cursor = 0;
+    visitor.segment = [&](std::size_t k, const Vec2& from, const Vec2& to) {
+      if (!run.origins.empty() && !run.fresh[k]) {
+        const std::size_t i = run.origins[k];
+        while (cursor < old_segments.size() && old_segments[cursor].module < i) ++cursor;
+        if (cursor < old_segments.size() && old_segments[cursor].module == i && !reused[cursor]) {
+          const GridSegment& old = runner.grid[old_segments[cursor].id];
+          if (old.a == from && old.b == to) {
+            run.segments.push_back({k, old_segments[cursor].id});
+            reused[cursor] = 1;
+            return;
+          }
+        }
+      }
+      if (point_in_polygon(0.5 * (from + to), polygon))
+        run.segments.push_back({k, runner.grid.insert({from, to, run.start.element_id})});
     };
-    visitor.other = [&](std::size_t index, const TurtlePose& pose) -> double {
-      const Module& module = run.modules[index];
+    visitor.motif = [&](std::size_t k, const Path2d& motif, const TurtlePose& pose, double size) {
+      if (point_in_polygon(pose.position, polygon)) run.motifs.push_back({k, place_motif(motif, pose, size)});
+    };
+    visitor.other = [&](std::size_t k, const TurtlePose& pose) -> double {
+      const Module& module = run.modules[k];
       if (!is_query_symbol(module.symbol)) return 0;
-      if (run.fresh[index]) run.queries.emplace_back(index, pose);
-      return module.symbol == "?X" ? collision_query_length(module, !run.fresh[index], pose.scale) : 0;
+      if (run.fresh[k]) run.queries.emplace_back(k, pose);
+      return module.symbol == "?X" ? collision_query_length(module, !run.fresh[k], pose.scale) : 0;
     };
     walk_turtle(run.modules, runner.turtle, run.start.pose, visitor);
+    for (std::size_t e = 0; e < old_segments.size(); ++e)
+      if (!reused[e]) runner.grid.remove(old_segments[e].id);
+  }
+
+  // Takes finished branches out of the string: a closed `[...]` whose modules were all copied
+  // unchanged by the last step (so no production applies to any of them, ever: their
+  // parameters are fixed) and before which no new module stands in any enclosing branch (so no
+  // later `cut` can reach it). Such a branch leaves the turtle where it found it, so the rest of
+  // the string is interpreted exactly as before; its elements stay in the grid. This keeps the
+  // work of a step proportional to the growing part of the string.
+  void freeze(SeedRun& run) {
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    const std::size_t n = run.modules.size();
+    if (run.origins.empty()) return;  // a new run: everything is fresh
+    std::vector<char> remove(n, 0);
+    std::vector<char> live_before;  // per open `[`: a fresh module stood before it (inherited)
+    bool live = false;
+    std::size_t removed = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::string& symbol = run.modules[k].symbol;
+      if (symbol == "[") {
+        const std::size_t end = run.match[k];
+        if (!live && end != none) {
+          bool all_copied = true;
+          for (std::size_t m = k; m <= end && all_copied; ++m) all_copied = !run.fresh[m];
+          if (all_copied) {
+            std::fill(remove.begin() + static_cast<std::ptrdiff_t>(k), remove.begin() + static_cast<std::ptrdiff_t>(end) + 1, 1);
+            removed += end - k + 1;
+            k = end;
+            continue;
+          }
+        }
+        live_before.push_back(live);
+      } else if (symbol == "]" && !live_before.empty()) {
+        live = live_before.back();
+        live_before.pop_back();
+        continue;
+      }
+      live = live || run.fresh[k];
+    }
+    if (removed == 0) return;
+    std::vector<std::size_t> renumber(n, none);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (!remove[k]) renumber[k] = kept++;
+    std::size_t write = 0;
+    for (const DrawnSegment& segment : run.segments) {
+      if (remove[segment.module]) {
+        run.frozen_segments.push_back(segment.id);
+      } else {
+        run.segments[write++] = {renumber[segment.module], segment.id};
+      }
+    }
+    run.segments.resize(write);
+    write = 0;
+    for (DrawnMotif& motif : run.motifs) {
+      if (remove[motif.module]) {
+        run.frozen_motifs.push_back(std::move(motif.path));
+      } else {
+        run.motifs[write++] = {renumber[motif.module], std::move(motif.path)};
+      }
+    }
+    run.motifs.resize(write);
+    for (auto& query : run.queries) query.first = renumber[query.first];
+    std::vector<Module> modules;
+    std::vector<char> fresh;
+    std::vector<std::size_t> match;
+    std::vector<TurtlePose> poses;
+    modules.reserve(kept);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (remove[k]) continue;
+      modules.push_back(std::move(run.modules[k]));
+      fresh.push_back(run.fresh[k]);
+      match.push_back(run.match[k] == none ? none : renumber[run.match[k]]);
+      poses.push_back(run.poses[k]);
+    }
+    run.modules = std::move(modules);
+    run.fresh = std::move(fresh);
+    run.match = std::move(match);
+    run.poses = std::move(poses);
   }
 
   void answer_all() {
@@ -237,7 +407,8 @@ class Growth {
           fail_guide(*runner.guide, error.what());
         }
       }
-      for (const SeedRun& run : runner.runs) elements += run.segments.size() + run.motifs.size();
+      for (const SeedRun& run : runner.runs)
+        elements += run.segments.size() + run.motifs.size() + run.frozen_segments.size() + run.frozen_motifs.size();
     }
     if (elements > scene_.limits.max_elements)
       throw LimitError("growth exceeds " + std::to_string(scene_.limits.max_elements) +
@@ -245,17 +416,24 @@ class Growth {
   }
 
   void answer_guide(GuideRunner& runner) {
-    std::size_t count = 0;
-    double length_sum = 0;
-    for (SeedRun& run : runner.runs) {
-      if (run.dirty) interpret(runner, run);
-      count += run.segments.size();
-      for (const GridSegment& s : run.segments) length_sum += (s.b - s.a).norm();
+    for (std::size_t id : runner.provisional) runner.grid.remove(id);
+    runner.provisional.clear();
+    for (SeedRun& run : runner.runs)
+      if (run.dirty) {
+        interpret(runner, run);
+        freeze(run);
+      }
+    if (runner.grid.live() > 4 * runner.laid_out + 256) {  // re-lay the cells for the grown count
+      double length_sum = 0;
+      std::size_t count = 0;
+      for (std::size_t id = 0; id < runner.grid.size(); ++id) {
+        length_sum += (runner.grid[id].b - runner.grid[id].a).norm();
+        ++count;
+      }
+      runner.grid.relayout(count ? 0.5 * length_sum / count : 0);
+      runner.laid_out = runner.grid.live();
     }
-    const Vec2 margin = 0.1 * (runner.high - runner.low);
-    runner.grid.reset(runner.low - margin, runner.high + margin, count, count ? 0.5 * length_sum / count : 0);
-    for (const SeedRun& run : runner.runs)
-      for (const GridSegment& s : run.segments) runner.grid.insert(s);
+    const std::size_t before = runner.grid.size();
     for (std::size_t r = 0; r < runner.runs.size(); ++r) {
       SeedRun& run = runner.runs[r];
       for (const auto& [index, pose] : run.queries) {
@@ -266,6 +444,7 @@ class Growth {
       std::fill(run.fresh.begin(), run.fresh.end(), 0);
       run.dirty = false;
     }
+    for (std::size_t id = before; id < runner.grid.size(); ++id) runner.provisional.push_back(id);
   }
 
   void reserve(GuideRunner& runner, std::size_t run, std::size_t module, const EdgeCrossing& crossing) {
@@ -301,8 +480,10 @@ class Growth {
           apply_cuts(next, &origins, &fresh);
           run.modules.swap(next);
           run.fresh.swap(fresh);
+          run.origins = origins;
           run.dirty = true;
         } else {
+          run.modules.swap(next);  // unchanged, but moved by the rewriter
           run.active = false;
         }
         resolve(g, r, rewrote, origins, step);

@@ -16,6 +16,7 @@ void SegmentGrid::reset(const Vec2& low, const Vec2& high, std::size_t expected,
   const int nx = std::max(1, static_cast<int>(std::ceil(size.x() / cell)));
   const int ny = std::max(1, static_cast<int>(std::ceil(size.y() / cell)));
   low_ = low;
+  high_ = high;
   cell_ = cell;
   if (nx != nx_ || ny != ny_ || cells_.empty()) {
     nx_ = nx;
@@ -26,6 +27,29 @@ void SegmentGrid::reset(const Vec2& low, const Vec2& high, std::size_t expected,
   }
   segments_.clear();
   stamps_.clear();
+  alive_.clear();
+  live_ = 0;
+}
+
+void SegmentGrid::relayout(double min_cell) {
+  std::vector<GridSegment> segments = std::move(segments_);
+  std::vector<char> alive = std::move(alive_);
+  reset(low_, high_, live_, min_cell);
+  segments_ = std::move(segments);
+  alive_ = std::move(alive);
+  stamps_.assign(segments_.size(), 0);
+  for (std::size_t i = 0; i < segments_.size(); ++i)
+    if (alive_[i]) {
+      ++live_;
+      add_to_cells(i);
+    }
+}
+
+void SegmentGrid::remove(std::size_t index) {
+  if (alive_[index]) {
+    alive_[index] = 0;
+    --live_;
+  }
 }
 
 int SegmentGrid::column(double x) const {
@@ -42,22 +66,29 @@ std::size_t SegmentGrid::insert(const GridSegment& segment) {
   const std::size_t index = segments_.size();
   segments_.push_back(segment);
   stamps_.push_back(0);
+  alive_.push_back(1);
+  ++live_;
+  add_to_cells(index);
+  return index;
+}
+
+void SegmentGrid::add_to_cells(std::size_t index) {
+  const GridSegment& segment = segments_[index];
   const double pad = cell_ * 1e-9;
   const Vec2 lo = segment.a.cwiseMin(segment.b) - Vec2::Constant(pad);
   const Vec2 hi = segment.a.cwiseMax(segment.b) + Vec2::Constant(pad);
   for (int y = row(lo.y()); y <= row(hi.y()); ++y)
     for (int x = column(lo.x()); x <= column(hi.x()); ++x) cells_[cell_of(x, y)].push_back(static_cast<std::uint32_t>(index));
-  return index;
 }
 
 bool SegmentGrid::seen(std::size_t index) const {
-  if (stamps_[index] == query_) return true;
+  if (stamps_[index] == query_ || !alive_[index]) return true;
   stamps_[index] = query_;
   return false;
 }
 
 std::optional<GridHit> SegmentGrid::first_hit(const Vec2& p, const Vec2& q, double min_t) const {
-  if (segments_.empty()) return std::nullopt;
+  if (live_ == 0) return std::nullopt;
   ++query_;
   std::optional<GridHit> best;
   auto test_cell = [&](int x, int y) {
@@ -111,7 +142,7 @@ std::optional<GridHit> SegmentGrid::first_hit(const Vec2& p, const Vec2& q, doub
 }
 
 std::optional<GridHit> SegmentGrid::nearest(const Vec2& p) const {
-  if (segments_.empty()) return std::nullopt;
+  if (live_ == 0) return std::nullopt;
   ++query_;
   std::optional<GridHit> best;
   const int cx = column(p.x()), cy = row(p.y());

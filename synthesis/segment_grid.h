@@ -27,7 +27,8 @@ struct GridHit {
   Vec2 point = Vec2::Zero();
 };
 
-/// Uniform grid of segments; rebuilt cheaply with reset() and filled with insert().
+/// Uniform grid of segments; filled with insert(), emptied with reset(); removed segments keep
+/// their index (it stays valid) but are no longer found.
 class SegmentGrid {
  public:
   /// Empties the grid and lays `expected` segments out over the box [low, high] (drawing
@@ -37,7 +38,17 @@ class SegmentGrid {
   /// Adds a segment; returns its index.
   std::size_t insert(const GridSegment& segment);
 
+  /// Stops finding segment `index`.
+  void remove(std::size_t index);
+
+  /// Lays the cells out again for the segments still present (as reset() would for that many)
+  /// without changing any index; for grids that grew far beyond what reset() expected.
+  void relayout(double min_cell);
+
+  /// Segments inserted so far (removed ones included): the bound of valid indices.
   std::size_t size() const { return segments_.size(); }
+  /// Segments present (not removed).
+  std::size_t live() const { return live_; }
   const GridSegment& operator[](std::size_t index) const { return segments_[index]; }
 
   /// The stored segment that the query segment [p, q] meets first, with t in (min_t, 1]
@@ -56,7 +67,12 @@ class SegmentGrid {
   Vec2 low_ = Vec2::Zero();
   double cell_ = 1;
   int nx_ = 1, ny_ = 1;
+  void add_to_cells(std::size_t index);
+
+  Vec2 high_ = Vec2::Zero();
+  std::size_t live_ = 0;
   std::vector<GridSegment> segments_;
+  std::vector<char> alive_;
   std::vector<std::vector<std::uint32_t>> cells_;
   mutable std::vector<std::uint32_t> stamps_;  // per segment: the query that last looked at it
   mutable std::uint32_t query_ = 0;

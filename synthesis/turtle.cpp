@@ -5,6 +5,7 @@
 #include "synthesis/segment2d.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace dg {
@@ -40,42 +41,121 @@ TurtleOptions turtle_options(const TurtleSettings& settings) {
   return options;
 }
 
+namespace {
+
+// What the turtle does with a symbol.
+enum class TurtleAction : char { Other, Motif, Draw, Move, Left, Right, Around, Scale, Push, Pop };
+
+// Actions of one-character symbols, looked up by byte (most symbols are one character).
+struct ActionTable {
+  std::array<TurtleAction, 128> action{};
+  std::array<const Path2d*, 128> motif{};
+};
+
+TurtleAction action_of(const std::string& symbol, const TurtleOptions& options, const Path2d*& motif) {
+  if (const auto found = options.motifs.find(symbol); found != options.motifs.end()) {
+    motif = &found->second;
+    return TurtleAction::Motif;
+  }
+  if (symbol == "f") return TurtleAction::Move;
+  if (std::find(options.draw_symbols.begin(), options.draw_symbols.end(), symbol) != options.draw_symbols.end())
+    return TurtleAction::Draw;
+  if (symbol == "+") return TurtleAction::Left;
+  if (symbol == "-") return TurtleAction::Right;
+  if (symbol == "|") return TurtleAction::Around;
+  if (symbol == "*") return TurtleAction::Scale;
+  if (symbol == "[") return TurtleAction::Push;
+  if (symbol == "]") return TurtleAction::Pop;
+  return TurtleAction::Other;
+}
+
+ActionTable action_table(const TurtleOptions& options) {
+  ActionTable table;
+  for (int c = 33; c < 127; ++c) table.action[c] = action_of(std::string(1, static_cast<char>(c)), options, table.motif[c]);
+  return table;
+}
+
+}  // namespace
+
 void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
                  const TurtleVisitor& visitor) {
   Random random(options.seed);
   auto jitter_factor = [&] { return options.jitter_scale > 0 ? 1 + random.uniform(-1, 1) * options.jitter_scale : 1.0; };
   auto jitter_angle = [&] { return options.jitter_angle_deg > 0 ? random.uniform(-1, 1) * options.jitter_angle_deg : 0.0; };
+  const ActionTable table = action_table(options);
   TurtlePose state = start;
   std::vector<TurtlePose> stack;
+  double direction_heading = start.heading_deg;  // heading_vector(direction_heading) == direction
+  Vec2 direction = heading_vector(direction_heading);
   for (std::size_t i = 0; i < modules.size(); ++i) {
     const Module& module = modules[i];
     const std::string& symbol = module.symbol;
-    if (const auto motif = options.motifs.find(symbol); motif != options.motifs.end()) {
-      const double size = state.scale * jitter_factor();
-      if (visitor.motif) visitor.motif(i, motif->second, state, size);
-    } else if (symbol == "f" ||
-               std::find(options.draw_symbols.begin(), options.draw_symbols.end(), symbol) != options.draw_symbols.end()) {
-      const double length = (module.parameters.empty() ? options.step : module.parameters.front()) * state.scale;
-      const Vec2 from = state.position;
-      state.position += heading_vector(state.heading_deg) * length * jitter_factor();
-      if (symbol != "f" && visitor.segment) visitor.segment(i, from, state.position);
-    } else if (symbol == "+") {
-      state.heading_deg += argument_or(module, options.angle_deg, i, "angle") + jitter_angle();
-    } else if (symbol == "-") {
-      state.heading_deg -= argument_or(module, options.angle_deg, i, "angle") + jitter_angle();
-    } else if (symbol == "|") {
-      state.heading_deg += 180;
-    } else if (symbol == "*") {
-      state.scale *= argument_or(module, options.scale, i, "scale") * jitter_factor();
-    } else if (symbol == "[") {
-      stack.push_back(state);
-    } else if (symbol == "]") {
-      if (stack.empty()) throw InputError("module " + std::to_string(i) + ": ']' without a matching '['");
-      state = stack.back();
-      stack.pop_back();
-    } else if (visitor.other) {
-      const double ahead = visitor.other(i, state);
-      if (ahead != 0) state.position += heading_vector(state.heading_deg) * ahead;
+    const Path2d* motif = nullptr;
+    const auto byte = static_cast<unsigned char>(symbol[0]);
+    TurtleAction action;
+    if (symbol.size() == 1 && byte < 128) {
+      action = table.action[byte];
+      motif = table.motif[byte];
+    } else {
+      action = action_of(symbol, options, motif);
+    }
+    if (action == TurtleAction::Push && visitor.branch) {
+      const std::size_t next = visitor.branch(i, state);
+      if (next > i) {
+        i = next - 1;
+        continue;
+      }
+    }
+    switch (action) {
+      case TurtleAction::Motif: {
+        const double size = state.scale * jitter_factor();
+        if (visitor.motif) visitor.motif(i, *motif, state, size);
+        break;
+      }
+      case TurtleAction::Draw:
+      case TurtleAction::Move: {
+        const double length = (module.parameters.empty() ? options.step : module.parameters.front()) * state.scale;
+        const Vec2 from = state.position;
+        if (state.heading_deg != direction_heading) {
+          direction_heading = state.heading_deg;
+          direction = heading_vector(direction_heading);
+        }
+        state.position += direction * length * jitter_factor();
+        if (action == TurtleAction::Draw && visitor.segment) visitor.segment(i, from, state.position);
+        break;
+      }
+      case TurtleAction::Left:
+        state.heading_deg += argument_or(module, options.angle_deg, i, "angle") + jitter_angle();
+        break;
+      case TurtleAction::Right:
+        state.heading_deg -= argument_or(module, options.angle_deg, i, "angle") + jitter_angle();
+        break;
+      case TurtleAction::Around:
+        state.heading_deg += 180;
+        break;
+      case TurtleAction::Scale:
+        state.scale *= argument_or(module, options.scale, i, "scale") * jitter_factor();
+        break;
+      case TurtleAction::Push:
+        stack.push_back(state);
+        break;
+      case TurtleAction::Pop:
+        if (stack.empty()) throw InputError("module " + std::to_string(i) + ": ']' without a matching '['");
+        state = stack.back();
+        stack.pop_back();
+        break;
+      case TurtleAction::Other:
+        if (visitor.other) {
+          const double ahead = visitor.other(i, state);
+          if (ahead != 0) {
+            if (state.heading_deg != direction_heading) {
+              direction_heading = state.heading_deg;
+              direction = heading_vector(direction_heading);
+            }
+            state.position += direction * ahead;
+          }
+        }
+        break;
     }
   }
 }

@@ -60,6 +60,10 @@ struct TurtleVisitor {
   /// Module `index` is a symbol the turtle does not act on; returns a distance (drawing units,
   /// already scaled) the turtle then moves ahead without drawing, usually 0.
   std::function<double(std::size_t index, const TurtlePose& pose)> other;
+  /// Module `index` is `[` seen at `pose`; returns where to go on: `index` enters the branch as
+  /// usual, a larger index skips to that module with the pose unchanged and nothing pushed
+  /// (for callers that already know what the branch draws).
+  std::function<std::size_t(std::size_t index, const TurtlePose& pose)> branch;
 };
 
 /// Walks `modules` from `start` with the rules above (options.heading_deg is not used; the

@@ -58,7 +58,8 @@ TEST_CASE("a rewriting step reports where every module comes from and whether it
   std::vector<dg::Module> out;
   std::vector<std::size_t> origins;
   std::vector<char> fresh;
-  CHECK(rewriter.step(system.axiom, random, out, &origins, &fresh, 100, 1));
+  std::vector<dg::Module> axiom = system.axiom;
+  CHECK(rewriter.step(axiom, random, out, &origins, &fresh, 100, 1));
   CHECK(dg::format_modules(out) == "FAFA");
   CHECK(origins == std::vector<std::size_t>{0, 0, 2, 2});
   CHECK(fresh == std::vector<char>{1, 1, 1, 1});
@@ -66,7 +67,8 @@ TEST_CASE("a rewriting step reports where every module comes from and whether it
   origins.clear();
   fresh.clear();
   const dg::LSystem inert = dg::parse_lsystem_text("axiom: G F\nA -> F\n", "inert.ls");
-  CHECK_FALSE(dg::Rewriter(inert).step(inert.axiom, random, out, &origins, &fresh, 100, 1));
+  std::vector<dg::Module> inert_axiom = inert.axiom;
+  CHECK_FALSE(dg::Rewriter(inert).step(inert_axiom, random, out, &origins, &fresh, 100, 1));
   CHECK(fresh == std::vector<char>{0, 0});
 }
 
