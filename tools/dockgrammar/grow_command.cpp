@@ -73,6 +73,8 @@ void run_grow(const GrowOptions& options) {
     result = grow(scene, growth_options);
   } catch (const InputError& error) {
     throw InputError(options.scene + ": " + error.what());
+  } catch (const LimitError& error) {
+    throw LimitError(options.scene + ": " + error.what());
   }
   const double grow_s = clock.lap();
   double regrow_s = 0;
@@ -90,6 +92,8 @@ void run_grow(const GrowOptions& options) {
       result = regrow(scene, result, changed, growth_options);
     } catch (const InputError& error) {
       throw InputError(options.edits + ": " + error.what());
+    } catch (const LimitError& error) {
+      throw LimitError(options.edits + ": " + error.what());
     }
     regrow_s = again.lap();
   }
