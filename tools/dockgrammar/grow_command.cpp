@@ -77,6 +77,8 @@ void run_grow(const GrowOptions& options) {
     throw LimitError(options.scene + ": " + error.what());
   }
   const double grow_s = clock.lap();
+  const std::size_t grown_elements = result.elements();
+  const int grown_steps = result.steps;
   double regrow_s = 0;
   if (!options.edits.empty()) {
     const std::vector<GuideEdit> edits = read_guide_edits(options.edits, scene);
@@ -128,11 +130,15 @@ void run_grow(const GrowOptions& options) {
     }
     fmt::print("{}\n", report.dump());
   } else {
-    fmt::print("{}: {} guides, {} elements, {} tokens used, {} steps, {:.3f} s -> {}\n", options.scene,
-               scene.guides.size(), result.elements(), tokens_used, result.steps, grow_s, options.output);
-    if (!options.edits.empty())
-      fmt::print("{}: regrew {} of {} guides in {:.3f} s\n", options.edits, result.regrown_guides, scene.guides.size(),
-                 regrow_s);
+    if (options.edits.empty()) {
+      fmt::print("{}: {} guides, {} elements, {} tokens used, {} steps, {:.3f} s -> {}\n", options.scene,
+                 scene.guides.size(), grown_elements, tokens_used, grown_steps, grow_s, options.output);
+    } else {
+      fmt::print("{}: {} guides, {} elements, {} steps, {:.3f} s\n", options.scene, scene.guides.size(), grown_elements,
+                 grown_steps, grow_s);
+      fmt::print("{}: regrew {} of {} guides in {:.3f} s: {} elements, {} tokens used -> {}\n", options.edits,
+                 result.regrown_guides, scene.guides.size(), regrow_s, result.elements(), tokens_used, options.output);
+    }
   }
 }
 
