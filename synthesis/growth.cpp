@@ -311,7 +311,7 @@ class Growth {
       const Module& module = run.modules[k];
       if (!is_query_symbol(module.symbol)) return 0;
       if (run.fresh[k]) run.queries.emplace_back(k, pose);
-      return module.symbol == "?X" ? collision_query_length(module, !run.fresh[k], pose.scale) : 0;
+      return is_collision_query(module.symbol) ? collision_query_length(module, !run.fresh[k], pose.scale) : 0;
     };
     walk_turtle(run.modules, runner.turtle, run.start.pose, visitor);
     for (std::size_t e = 0; e < old_segments.size(); ++e)

@@ -21,6 +21,11 @@ struct Found {
   std::size_t edge = 0;
 };
 
+// The id a filtered query (`?DLI`, ...) asks for, or nothing.
+using IdFilter = std::optional<double>;
+
+bool passes(const IdFilter& filter, double id) { return !filter || *filter == id; }
+
 // Outgoing links that start on `edge`, in scene order.
 std::vector<std::size_t> links_on_edge(const GuideEnvironment& environment, std::size_t edge) {
   std::vector<std::size_t> links;
@@ -29,9 +34,10 @@ std::vector<std::size_t> links_on_edge(const GuideEnvironment& environment, std:
   return links;
 }
 
-Found nearest_link(const Vec2& p, const GuideEnvironment& environment) {
+Found nearest_link(const Vec2& p, const GuideEnvironment& environment, const IdFilter& filter) {
   Found best;
   for (const LinkEdge& link : environment.links) {
+    if (!passes(filter, static_cast<double>(link.link))) continue;
     const Vec2 point = link.a + closest_parameter(p, link.a, link.b) * (link.b - link.a);
     const double distance = (point - p).norm();
     if (distance < best.distance) best = {link_found, distance, point, static_cast<double>(link.link), link.edge};
@@ -39,10 +45,11 @@ Found nearest_link(const Vec2& p, const GuideEnvironment& environment) {
   return best;
 }
 
-Found nearest_guide_edge(const Vec2& p, const GuideEnvironment& environment) {
+Found nearest_guide_edge(const Vec2& p, const GuideEnvironment& environment, const IdFilter& filter = {}) {
   Found best;
   const std::vector<Vec2>& polygon = *environment.polygon;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
+    if (!passes(filter, static_cast<double>(i))) continue;
     const Vec2& a = polygon[i];
     const Vec2& b = polygon[(i + 1) % polygon.size()];
     const Vec2 point = a + closest_parameter(p, a, b) * (b - a);
@@ -53,10 +60,12 @@ Found nearest_guide_edge(const Vec2& p, const GuideEnvironment& environment) {
 }
 
 // First guide edge met by [p, q] with parameter above min_t; distance holds the parameter.
-Found first_guide_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment) {
+Found first_guide_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment,
+                       const IdFilter& filter = {}) {
   Found best;
   const std::vector<Vec2>& polygon = *environment.polygon;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
+    if (!passes(filter, static_cast<double>(i))) continue;
     const auto crossing = cross_segments(p, q, polygon[i], polygon[(i + 1) % polygon.size()]);
     if (crossing && crossing->s > min_t && crossing->s < best.distance)
       best = {guide_found, crossing->s, p + crossing->s * (q - p), static_cast<double>(i), i};
@@ -64,9 +73,11 @@ Found first_guide_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEn
   return best;
 }
 
-Found first_link_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment) {
+Found first_link_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment,
+                      const IdFilter& filter) {
   Found best;
   for (const LinkEdge& link : environment.links) {
+    if (!passes(filter, static_cast<double>(link.link))) continue;
     const auto crossing = cross_segments(p, q, link.a, link.b);
     if (crossing && crossing->s > min_t && crossing->s < best.distance)
       best = {link_found, crossing->s, p + crossing->s * (q - p), static_cast<double>(link.link), link.edge};
@@ -74,9 +85,10 @@ Found first_link_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnv
   return best;
 }
 
-Found first_element(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment) {
+Found first_element(const Vec2& p, const Vec2& q, double min_t, const GuideEnvironment& environment,
+                    const IdFilter& filter = {}) {
   Found best;
-  if (const auto hit = environment.elements->first_hit(p, q, min_t))
+  if (const auto hit = environment.elements->first_hit(p, q, min_t, filter))
     best = {element_found, hit->t, hit->point, (*environment.elements)[hit->index].id, 0};
   return best;
 }
@@ -115,16 +127,17 @@ void prepend(Module& module, std::initializer_list<double> outputs) {
   module.parameters.insert(module.parameters.begin(), outputs.begin(), outputs.end());
 }
 
-void answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target) {
+void answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
+                     const IdFilter& filter) {
   const Vec2& p = pose.position;
   Found found;
   if (target == 'L') {
-    found = nearest_link(p, environment);
+    found = nearest_link(p, environment, filter);
   } else if (target == 'G') {
-    found = nearest_guide_edge(p, environment);
+    found = nearest_guide_edge(p, environment, filter);
   } else {
-    found = promote_link(nearest_guide_edge(p, environment), environment);
-    if (const auto hit = environment.elements->nearest(p); hit && hit->t < found.distance)
+    found = promote_link(nearest_guide_edge(p, environment, filter), environment);
+    if (const auto hit = environment.elements->nearest(p, filter); hit && hit->t < found.distance)
       found = {element_found, hit->t, hit->point, (*environment.elements)[hit->index].id, 0};
   }
   if (found.kind == 0) {
@@ -135,18 +148,19 @@ void answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironm
   prepend(module, {found.kind, found.distance, beta, found.id});
 }
 
-void answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target) {
+void answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
+                  const IdFilter& filter) {
   const double length = ray_length(environment);
   const Vec2 p = pose.position, q = p + heading_vector(pose.heading_deg) * length;
   const double min_t = 1e-9;
   Found found;
   if (target == 'L') {
-    found = first_link_edge(p, q, min_t, environment);
+    found = first_link_edge(p, q, min_t, environment, filter);
   } else if (target == 'G') {
-    found = first_guide_edge(p, q, min_t, environment);
+    found = first_guide_edge(p, q, min_t, environment, filter);
   } else {
-    found = closer(promote_link(first_guide_edge(p, q, min_t, environment), environment),
-                   first_element(p, q, min_t, environment));
+    found = closer(promote_link(first_guide_edge(p, q, min_t, environment, filter), environment),
+                   first_element(p, q, min_t, environment, filter));
   }
   if (found.kind == 0)
     prepend(module, {0, 0, -1});
@@ -155,13 +169,13 @@ void answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment
 }
 
 std::optional<EdgeCrossing> answer_collision(Module& module, const TurtlePose& pose, GuideEnvironment& environment,
-                                             double element_id) {
+                                             double element_id, const IdFilter& filter) {
   const double length = collision_query_length(module, false, pose.scale);
   const Vec2 p = pose.position, q = p + heading_vector(pose.heading_deg) * length;
   const double min_t = 1e-6;
-  const Found edge = promote_link(first_guide_edge(p, q, min_t, environment), environment);
-  Found found = closer(edge, first_element(p, q, min_t, environment));
-  if (found.kind == 0 && outside_guide(p, environment)) {  // escaped (e.g. through a vertex): the guide stops it
+  const Found edge = promote_link(first_guide_edge(p, q, min_t, environment, filter), environment);
+  Found found = closer(edge, first_element(p, q, min_t, environment, filter));
+  if (found.kind == 0 && !filter && outside_guide(p, environment)) {  // escaped (e.g. through a vertex): the guide stops it
     found = nearest_guide_edge(p, environment);
     found.point = p;
   }
@@ -181,14 +195,17 @@ std::optional<EdgeCrossing> answer_collision(Module& module, const TurtlePose& p
 }  // namespace
 
 bool is_growth_query(const std::string& symbol) {
-  static const std::vector<std::string> known{"?DL", "?DG", "?DA", "?NL", "?NG", "?NA", "?X", "?seed"};
+  static const std::vector<std::string> known{"?DL",  "?DG",  "?DA",  "?NL",  "?NG",  "?NA", "?X",   "?seed",
+                                              "?DLI", "?DGI", "?DAI", "?NLI", "?NGI", "?NAI", "?XI"};
   return std::find(known.begin(), known.end(), symbol) != known.end();
 }
+
+bool is_collision_query(const std::string& symbol) { return symbol == "?X" || symbol == "?XI"; }
 
 double collision_query_length(const Module& module, bool answered, double scale) {
   const std::size_t at = answered ? 2 : 0;
   if (module.parameters.size() <= at)
-    throw InputError("?X needs the length of the segment it tests as its first argument, like ?X(2)");
+    throw InputError(module.symbol + " needs the length of the segment it tests as its first argument, like ?X(2)");
   return module.parameters[at] * scale;
 }
 
@@ -196,15 +213,24 @@ std::optional<EdgeCrossing> answer_query(Module& module, const TurtlePose& pose,
                                          const SeedStart& seed) {
   const std::string& symbol = module.symbol;
   if (!is_growth_query(symbol))
-    throw InputError("unknown query module " + symbol + " (known: ?DL ?DG ?DA ?NL ?NG ?NA ?X ?seed)");
-  if (symbol == "?X") return answer_collision(module, pose, environment, seed.element_id);
+    throw InputError("unknown query module " + symbol +
+                     " (known: ?DL ?DG ?DA ?NL ?NG ?NA ?X ?seed, and ?DLI ... ?XI with an id filter)");
+  const bool filtered = symbol.back() == 'I';
+  IdFilter filter;
+  if (filtered) {  // idtest: the first input (?XI: the second, after delta)
+    const std::size_t at = symbol == "?XI" ? 1 : 0;
+    if (module.parameters.size() <= at)
+      throw InputError(symbol + " needs the id it looks for as its " + (at ? "second" : "first") + " argument");
+    filter = module.parameters[at];
+  }
+  if (is_collision_query(symbol)) return answer_collision(module, pose, environment, seed.element_id, filter);
   if (symbol == "?seed") {
     if (!seed.values.empty()) module.parameters = seed.values;
     prepend(module, {seed.pose.position.x(), seed.pose.position.y(), seed.pose.heading_deg});
-  } else if (symbol.size() == 3 && symbol[1] == 'D') {
-    answer_distance(module, pose, environment, symbol[2]);
-  } else if (symbol.size() == 3 && symbol[1] == 'N') {
-    answer_ahead(module, pose, environment, symbol[2]);
+  } else if (symbol[1] == 'D') {
+    answer_distance(module, pose, environment, symbol[2], filter);
+  } else {
+    answer_ahead(module, pose, environment, symbol[2], filter);
   }
   return std::nullopt;
 }

@@ -10,6 +10,10 @@
 //                                                             delta * scale ahead
 //   ?seed (args...)        -> (x, y, heading, values...)      where the seed started
 //
+// Each has a variant with an id filter (Table 2's idtest): `?DLI ?DGI ?DAI ?NLI ?NGI ?NAI`
+// take the id as their first argument, `?XI(delta, idtest, ...)` as its second; they see only
+// links, guide edges or elements with that id (the layout of the answer is the same).
+//
 // found is 0 for nothing, 1 for a grown element, 2 for a guide edge and 3 for an edge that
 // starts a link; d is in drawing units, beta in degrees (counter-clockwise positive, the turn
 // toward the closest point); id is the link index (found 3), the guide edge index (found 2) or
@@ -61,7 +65,10 @@ struct SeedStart {
 /// True for the query symbols above.
 bool is_growth_query(const std::string& symbol);
 
-/// The distance a ?X module moves the turtle (its delta times the turtle scale): ?X stands for
+/// True for ?X and ?XI.
+bool is_collision_query(const std::string& symbol);
+
+/// The distance a ?X (or ?XI) module moves the turtle (its delta times the turtle scale): ?X stands for
 /// the segment it tests, so the modules after it see the turtle at the segment's end. `answered`
 /// says whether the outputs are already in front of delta. Throws InputError without delta.
 double collision_query_length(const Module& module, bool answered, double scale);

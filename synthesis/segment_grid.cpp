@@ -87,13 +87,14 @@ bool SegmentGrid::seen(std::size_t index) const {
   return false;
 }
 
-std::optional<GridHit> SegmentGrid::first_hit(const Vec2& p, const Vec2& q, double min_t) const {
+std::optional<GridHit> SegmentGrid::first_hit(const Vec2& p, const Vec2& q, double min_t,
+                                              std::optional<double> only_id) const {
   if (live_ == 0) return std::nullopt;
   ++query_;
   std::optional<GridHit> best;
   auto test_cell = [&](int x, int y) {
     for (std::uint32_t index : cells_[cell_of(x, y)]) {
-      if (seen(index)) continue;
+      if (seen(index) || (only_id && segments_[index].id != *only_id)) continue;
       const GridSegment& s = segments_[index];
       const auto crossing = cross_segments(p, q, s.a, s.b);
       if (crossing && crossing->s > min_t && (!best || crossing->s < best->t))
@@ -141,7 +142,7 @@ std::optional<GridHit> SegmentGrid::first_hit(const Vec2& p, const Vec2& q, doub
   return best;
 }
 
-std::optional<GridHit> SegmentGrid::nearest(const Vec2& p) const {
+std::optional<GridHit> SegmentGrid::nearest(const Vec2& p, std::optional<double> only_id) const {
   if (live_ == 0) return std::nullopt;
   ++query_;
   std::optional<GridHit> best;
@@ -157,7 +158,7 @@ std::optional<GridHit> SegmentGrid::nearest(const Vec2& p) const {
       for (int x = cx - ring; x <= cx + ring; x += edge_row ? 1 : 2 * ring) {
         if (x >= 0 && x < nx_)
           for (std::uint32_t index : cells_[cell_of(x, y)]) {
-            if (seen(index)) continue;
+            if (seen(index) || (only_id && segments_[index].id != *only_id)) continue;
             const GridSegment& s = segments_[index];
             const double u = closest_parameter(p, s.a, s.b);
             const Vec2 point = s.a + u * (s.b - s.a);

@@ -53,10 +53,11 @@ class SegmentGrid {
 
   /// The stored segment that the query segment [p, q] meets first, with t in (min_t, 1]
   /// along [p, q]; nothing when no stored segment is met. Parallel overlaps are not hits.
-  std::optional<GridHit> first_hit(const Vec2& p, const Vec2& q, double min_t) const;
+  std::optional<GridHit> first_hit(const Vec2& p, const Vec2& q, double min_t, std::optional<double> only_id = {}) const;
 
   /// The stored segment closest to p (t = its distance), or nothing when the grid is empty.
-  std::optional<GridHit> nearest(const Vec2& p) const;
+  /// Both queries consider only segments with id `only_id` when it is given.
+  std::optional<GridHit> nearest(const Vec2& p, std::optional<double> only_id = {}) const;
 
  private:
   std::size_t cell_of(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + x; }

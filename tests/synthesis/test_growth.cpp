@@ -104,6 +104,25 @@ TEST_CASE("queries measure links, guide edges and elements as Table 2 says", "[g
   CHECK(crossed->t == Approx(0.8));  // edge 2 runs from (10, 10) to (0, 10)
   CHECK(crossed->carried == std::vector<double>{7});
 
+  // Id filters: ?DLI looks for link 9 only (on the left edge, farther away than link 4).
+  environment.links.push_back({square[3], square[0], 9, 3});
+  dg::Module only_nine{"?DLI", {9, 0.5}};
+  dg::answer_query(only_nine, pose, environment, seed);
+  CHECK(only_nine.parameters == std::vector<double>{3, 5, 180, 9, 9, 0.5});
+  dg::Module any_link{"?DL", {}};
+  dg::answer_query(any_link, pose, environment, seed);
+  CHECK(any_link.parameters[3] == 9);  // unfiltered: link 9 at distance 5 beats link 4 at 8
+  dg::Module only_four{"?NLI", {4}};
+  dg::answer_query(only_four, {{5, 2}, 90, 1}, environment, seed);
+  CHECK(only_four.parameters == std::vector<double>{3, 8, 4, 4});
+  dg::Module missing{"?DAI", {42}};
+  dg::answer_query(missing, pose, environment, seed);
+  CHECK(missing.parameters == std::vector<double>{0, 0, 0, -1, 42});
+  dg::Module only_element{"?XI", {4, 5}};  // the element with id 5 is 2 ahead; edges have other numbers
+  dg::answer_query(only_element, pose, environment, seed);
+  CHECK(only_element.parameters[0] == 1);
+  CHECK(only_element.parameters[1] == 5);
+
   dg::Module unknown{"?Q", {}};
   CHECK_THROWS_WITH(dg::answer_query(unknown, pose, environment, seed), Catch::Contains("unknown query module ?Q"));
 }
