@@ -6,8 +6,9 @@
 // then the time of an incremental regrowth after moving the last guide of the chain.
 // Usage: dockgrammar-bench-growth [--quick]
 
-#include "grammar/lsystem_text.h"
 #include "geometry/stopwatch.h"
+#include "grammar/lsystem_text.h"
+#include "grammar/random.h"
 #include "synthesis/growth.h"
 #include "synthesis/guide_edit.h"
 
@@ -61,6 +62,29 @@ dg::GrowthScene chain(double side) {
   return scene;
 }
 
+// The collision queries alone: the grown segments in one grid, then one ?X-like test per
+// element (a segment of 0.05 from a random point of the guide in a random direction).
+void time_collisions(const dg::GrowthScene& scene, const dg::GrowthResult& result) {
+  dg::Stopwatch clock;
+  dg::SegmentGrid grid;
+  const dg::Vec2 high = scene.guides[0].polygon[2];
+  std::size_t count = 0;
+  for (const dg::GuideGrowth& guide : result.guides) count += guide.segments.size();
+  grid.reset({0, 0}, high, count, 0.025);
+  for (const dg::GuideGrowth& guide : result.guides)
+    for (const dg::GridSegment& segment : guide.segments) grid.insert(segment);
+  const double build_s = clock.lap();
+  dg::Random random(3);
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const dg::Vec2 p(random.uniform(0, high.x()), random.uniform(0, high.y()));
+    const double angle = random.uniform(0, 6.283185307179586);
+    hits += grid.first_hit(p, p + 0.05 * dg::Vec2(std::cos(angle), std::sin(angle)), 1e-6).has_value();
+  }
+  fmt::print("{:<10} grid of {} segments built in {:.3f} s; {} collision queries in {:.3f} s ({} hits)\n", "", count,
+             build_s, count, clock.lap(), hits);
+}
+
 void run(const std::string& layout, const dg::GrowthScene& scene, bool edit) {
   dg::Stopwatch clock;
   const dg::GrowthResult result = dg::grow(scene);
@@ -69,7 +93,10 @@ void run(const std::string& layout, const dg::GrowthScene& scene, bool edit) {
   for (const dg::GuideGrowth& guide : result.guides) queries += guide.segments.size();
   fmt::print("{:<10} {:>8} elements  {:>8} collision queries  {:>5} steps  {:>8.3f} s  ({:.2f} us per element)\n",
              layout, result.elements(), queries, result.steps, seconds, 1e6 * seconds / std::max<std::size_t>(1, result.elements()));
-  if (!edit) return;
+  if (!edit) {
+    time_collisions(scene, result);
+    return;
+  }
   dg::GrowthScene edited = scene;
   dg::GuideEdit move;
   move.guide = edited.guides.size() - 1;
