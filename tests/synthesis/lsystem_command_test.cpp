@@ -1,30 +1,20 @@
 // End-to-end runs of `dockgrammar lsystem derive|print`.
 
+#include "support/cli_run.h"
+
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int status;
-  std::string output;
-};
+using Run = dg::test::CliRun;
 
-Run run(const std::string& arguments, const fs::path& folder) {
-  const fs::path log = folder / "log.txt";
-  const std::string command = std::string(DOCKGRAMMAR_CLI) + " " + arguments + " > " + log.string() + " 2>&1";
-  const int raw = std::system(command.c_str());
-  std::ifstream in(log);
-  std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
-}
+Run run(const std::string& arguments, const fs::path& folder) { return dg::test::run_cli(arguments, folder); }
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 

@@ -1,31 +1,22 @@
 // End-to-end runs of `dockgrammar grow`.
 
+#include "support/cli_run.h"
+
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int status;
-  std::string output;
-};
-
-Run grow(const std::string& arguments, const fs::path& folder) {
-  const fs::path log = folder / "log.txt";
-  const std::string command = std::string(DOCKGRAMMAR_CLI) + " grow " + arguments + " > " + log.string() + " 2>&1";
-  const int raw = std::system(command.c_str());
-  std::ifstream in(log);
-  std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
+dg::test::CliRun grow(const std::string& arguments, const fs::path& folder) {
+  return dg::test::run_cli("grow " + arguments, folder);
 }
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
@@ -38,7 +29,7 @@ TEST_CASE("grow renders a scene, reports counts as JSON, regrows after edits, an
   fs::create_directories(folder);
   const std::string scenes = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/scenes/";
 
-  Run ok = grow(scenes + "palm.json -o " + (folder / "palm.svg").string() + " --json", folder);
+  dg::test::CliRun ok = grow(scenes + "palm.json -o " + (folder / "palm.svg").string() + " --json", folder);
   REQUIRE(ok.status == 0);
   const nlohmann::json report = nlohmann::json::parse(ok.output);
   CHECK(report["tokens_used"] == 8);
@@ -69,7 +60,7 @@ TEST_CASE("grow renders a scene, reports counts as JSON, regrows after edits, an
   };
   for (const auto& [file, message] : bad) {
     INFO(file);
-    const Run failed = grow((folder / file).string() + " -o " + (folder / "x.svg").string(), folder);
+    const dg::test::CliRun failed = grow((folder / file).string() + " -o " + (folder / "x.svg").string(), folder);
     CHECK(failed.status == 2);
     CHECK(failed.output.find(file) != std::string::npos);
     CHECK(failed.output.find(message) != std::string::npos);
