@@ -289,3 +289,21 @@ TEST_CASE("bad scenes name the problem", "[growth]") {
   CHECK(error_of("{\n\"guides\": [\n}") == "bad.json:3: column 1: malformed JSON");
   CHECK(error_of(R"({"lsystems": {"w": "axiom: F("}, "guides": [)" + guide + "]}").find("bad.json: lsystems.w:1") == 0);
 }
+
+TEST_CASE("the same seed gives the same growth; stochastic rules follow the seed", "[growth]") {
+  const dg::GrowthScene streets =
+      dg::read_growth_scene(std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/scenes/streets.json");
+  dg::GrowthOptions one;
+  one.seed = 1;
+  dg::GrowthOptions two;
+  two.seed = 2;
+  const dg::GrowthResult a = dg::grow(streets, one), b = dg::grow(streets, one), c = dg::grow(streets, two);
+  bool all_same = true, any_different = false;
+  for (std::size_t g = 0; g < streets.guides.size(); ++g) {
+    all_same = all_same && same_segments(a.guides[g].segments, b.guides[g].segments);
+    any_different = any_different || !same_segments(a.guides[g].segments, c.guides[g].segments);
+  }
+  CHECK(all_same);
+  CHECK(any_different);  // the side streets are kept with probability 0.85
+  CHECK(same_segments(a.guides[0].segments, c.guides[0].segments));  // the centre has no stochastic rule
+}
