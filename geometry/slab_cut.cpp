@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <unordered_map>
 
@@ -96,30 +97,38 @@ void weld_vertices(TriangleMesh& mesh, double tolerance) {
       return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
     }
   };
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, KeyHash> buckets;
+  // Kept vertices per grid cell as intrusive lists: bucket head, then `next` per kept vertex.
+  constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
+  std::unordered_map<std::array<std::int64_t, 3>, std::uint32_t, KeyHash> head;
+  head.reserve(mesh.positions.size());
+  std::vector<std::uint32_t> next;
   std::vector<std::uint32_t> remap(mesh.positions.size());
   std::vector<Vec3> kept;
+  kept.reserve(mesh.positions.size());
+  next.reserve(mesh.positions.size());
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3& p = mesh.positions[v];
     const auto k = key(p);
-    long found = -1;
-    for (std::int64_t dx = -1; dx <= 1 && found < 0; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && found < 0; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && found < 0; ++dz) {
-          const auto bucket = buckets.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (bucket == buckets.end()) continue;
-          for (std::uint32_t w : bucket->second)
+    std::uint32_t found = kEnd;
+    for (std::int64_t dx = -1; dx <= 1 && found == kEnd; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && found == kEnd; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && found == kEnd; ++dz) {
+          const auto bucket = head.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (bucket == head.end()) continue;
+          for (std::uint32_t w = bucket->second; w != kEnd; w = next[w])
             if ((kept[w] - p).norm() <= tolerance) {
               found = w;
               break;
             }
         }
-    if (found < 0) {
-      found = static_cast<long>(kept.size());
+    if (found == kEnd) {
+      found = static_cast<std::uint32_t>(kept.size());
       kept.push_back(p);
-      buckets[k].push_back(static_cast<std::uint32_t>(found));
+      const auto [bucket, inserted] = head.try_emplace(k, found);
+      next.push_back(inserted ? kEnd : bucket->second);
+      bucket->second = found;
     }
-    remap[v] = static_cast<std::uint32_t>(found);
+    remap[v] = found;
   }
   std::vector<Triangle> triangles;
   triangles.reserve(mesh.triangles.size());

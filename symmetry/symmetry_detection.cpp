@@ -1,5 +1,7 @@
 #include "symmetry/symmetry_detection.h"
 
+#include "symmetry/cloud_keypoints.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -26,7 +28,9 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
 
   auto start = std::chrono::steady_clock::now();
   report_progress(progress, "symmetry candidates", 0.0);
-  std::vector<Keypoint> keypoints = feature_keypoints(prepared.feature_lines);
+  std::vector<Keypoint> keypoints = prepared.model.is_point_cloud()
+                                        ? cloud_keypoints(prepared.model.cloud, surface)
+                                        : feature_keypoints(prepared.feature_lines);
   if (keypoints.size() > options.max_keypoints) {  // evenly thinned: voting and ICP scale with their number
     std::vector<Keypoint> thinned;
     for (std::size_t i = 0; i < options.max_keypoints; ++i) thinned.push_back(keypoints[i * keypoints.size() / options.max_keypoints]);
@@ -42,7 +46,8 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   result.timings.push_back({"candidates", seconds_since(start)});
   if (candidates.empty()) {
     result.note = prepared.model.is_point_cloud()
-                      ? "no candidates: point clouds have no feature lines to align yet"
+                      ? (keypoints.empty() ? "no candidates: the point cloud has no creases or corners to align"
+                                           : "no candidates: no two creases of the point cloud match under a rigid motion")
                       : (keypoints.empty() ? "no candidates: the model has no feature-line ends (smooth or organic surface)"
                                            : "no candidates: no two feature-line ends match under a rigid motion");
     return result;

@@ -133,3 +133,46 @@ TEST_CASE("20 random pipe-tree variants: closed, no self-intersections, verify p
   }
   CHECK(sizes.size() >= 3);  // trees of different sizes
 }
+
+TEST_CASE("docking sites of the fence: insert at the far end, delete at the near end", "[grammar][docking]") {
+  const Analysed a = analyse("fence", {{"n", 4}});
+  const dg::VoxelSurface& surface = a.prepared.surface;
+  // The pitch translation (2, 0, 0) of the fence generator.
+  std::size_t pitch = a.symmetries.symmetries.size();
+  for (std::size_t i = 0; i < a.symmetries.symmetries.size(); ++i) {
+    const dg::DetectedSymmetry& s = a.symmetries.symmetries[i];
+    if (s.kind == "translation" && (s.transform.translation.cwiseAbs() - Eigen::Vector3d(2, 0, 0)).norm() < 1e-6) pitch = i;
+  }
+  REQUIRE(pitch < a.symmetries.symmetries.size());
+  const bool forward = a.symmetries.symmetries[pitch].transform.translation.x() > 0;
+  auto extent = [&](const std::vector<std::uint32_t>& cells) {
+    dg::BoundingBox box;
+    for (std::uint32_t c : cells) box.add(surface.centre(c));
+    return box;
+  };
+  std::size_t inserts = 0, deletes = 0;
+  for (const dg::DockingSite& s : a.sites.sites) {
+    if (s.symmetry != pitch) continue;
+    const bool moves_right = (s.inverse != forward);  // the operation's motion is +2 x
+    INFO("operation " << dg::operation_name(s.operation) << ", +x motion " << moves_right);
+    const dg::BoundingBox docker = extent(s.docker);
+    CHECK_FALSE(s.slippable);
+    if (s.operation == dg::OperationKind::insert) {
+      ++inserts;
+      // Inserting copies the unit next to the end the motion points to; the secondary docker
+      // (the end piece that gets replaced) lies inside the docker.
+      if (moves_right) CHECK(docker.max.x() > 9.5);
+      if (!moves_right) CHECK(docker.min.x() < 0.5);
+      CHECK(s.secondary_docker.size() < s.docker.size());
+      CHECK_FALSE(s.collides);
+    } else if (s.operation == dg::OperationKind::remove) {
+      ++deletes;
+      if (moves_right) CHECK(docker.min.x() < 0.5);
+      if (!moves_right) CHECK(docker.max.x() > 9.5);
+      CHECK(s.secondary_docker.size() > s.docker.size());
+    }
+  }
+  // One insert and one delete per direction of the motion.
+  CHECK(inserts == 2);
+  CHECK(deletes == 2);
+}

@@ -7,6 +7,7 @@
 #include "geometry/model_io.h"
 #include "geometry/render_mesh.h"
 #include "synthesis/shape_derivation.h"
+#include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/pictures.h"
 #include "synthesis/variants.h"
 
@@ -32,6 +33,7 @@ void add_generate_command(CLI::App& app) {
     std::string rules = "auto";
     int max_depth = 24;
     std::size_t max_triangles = 5'000'000;
+    int threads = 0;
     bool pictures = false;
     bool quiet = false;
   };
@@ -56,9 +58,12 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--max-triangles", options->max_triangles,
                       "Context-free: after this many triangles every slot gets the exemplar's production")
       ->capture_default_str();
+  command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
+      ->check(CLI::NonNegativeNumber);
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->callback([options] {
+    const auto threads = limit_threads(options->threads);
     const ShapeGrammar grammar = read_grammar(options->grammar);
     const std::filesystem::path folder(options->output);
     std::error_code error;
