@@ -106,7 +106,7 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
   std::string comparison;
   // Segment drawings: pieces as they are, and cut into equal steps.
   SegmentInferenceOptions segment_options = options.drawing.segments;
-  segment_options.join_fraction = std::max(segment_options.join_fraction, 0.5 / 512);
+  segment_options.join_fraction = std::max(segment_options.join_fraction, options.join_px / 512);
   segment_options.max_turn_error_deg = std::max(segment_options.max_turn_error_deg, options.max_turn_error_deg);
   segment_options.max_length_error = std::max(segment_options.max_length_error, options.max_length_error);
   if (auto tree = infer_segment_lsystem(pieces, false, segment_options)) keep_shorter(best, std::move(*tree), comparison, "instance tree");
@@ -117,7 +117,16 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
       keep_shorter(best, std::move(*tree), comparison, "instance tree on steps");
   const bool tree_has_rule = best && best->rules > 0;
   // Motif drawings: every stroke component is one element.
-  if (components.size() > 1 && components.size() <= options.max_components) {
+  std::size_t all_points = 0, largest = 0;
+  for (const auto& component : components) {
+    std::size_t points = 0;
+    for (std::size_t c : component) points += graph.chains[c].points.size();
+    all_points += points;
+    largest = std::max(largest, points);
+  }
+  const bool motif_like = components.size() >= 4 && components.size() <= options.max_components &&
+                          static_cast<double>(largest) <= options.max_component_share * static_cast<double>(all_points);
+  if (motif_like) {
     SvgDrawing drawing;
     for (const auto& component : components) {
       std::vector<std::vector<Vec2>> polylines;
@@ -133,7 +142,7 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
     keep_shorter(best, infer_lsystem(drawing, vector), comparison, "vector on components");
   }
   // Fallback: every straight piece an element of the vector inference.
-  if (!tree_has_rule && pieces.size() <= options.drawing.max_vector_elements) {
+  if (!tree_has_rule && pieces.size() <= options.max_vector_pieces) {
     SvgDrawing drawing;
     for (const TreeSegment& piece : pieces)
       drawing.elements.push_back(element_of({{Vec2(piece.start.x(), -piece.start.y()), Vec2(piece.end.x(), -piece.end.y())}}));
@@ -141,7 +150,7 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
   }
   if (!best)
     throw InputError("no inference path applies: the " + std::to_string(pieces.size()) + " straight pieces form no turtle tree within the tolerances, and there are too many pieces (> " +
-                     std::to_string(options.drawing.max_vector_elements) + ") or components (> " + std::to_string(options.max_components) + ") for the vector path");
+                     std::to_string(options.max_vector_pieces) + ") or components (> " + std::to_string(options.max_components) + ") for the vector path");
   result.inferred = std::move(*best);
   result.inferred.comparison = comparison;
   result.inferred.timings.total_s = seconds_since(start);

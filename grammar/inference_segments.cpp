@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace dg {
@@ -124,7 +125,12 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
           string.worst_length_error > options.max_length_error)
         return;
       CompactGrammar grammar = compact_turtle_string(string.text, options.max_block);
-      if (!best || grammar.length < best->grammar.length)
+      // Shorter first; equal lengths: the start lowest, then leftmost (independent of input order).
+      const Vec2 start = tree.nodes.front().start;
+      const auto key = [](std::size_t length, const Vec2& p) {
+        return std::make_tuple(length, std::round(p.y() * 1e3), std::round(p.x() * 1e3));
+      };
+      if (!best || key(grammar.length, start) < key(best->grammar.length, best->start))
         best = Best{std::move(grammar), parameters, std::move(string), tree.nodes.front().start};
     }
   };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <limits>
 #include <numeric>
@@ -104,14 +105,28 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
       if (cost < best_cost) best_cost = cost, result.angle_deg = candidate;
     }
   }
-  double total = 0;
-  for (std::size_t v = 0; v < n; ++v) total += length_of(tree.nodes[v]) / std::exp(exponent[v] * log_scale);
-  result.step = total / static_cast<double>(n);
+  // Step and heading: the least-squares similarity (complex factor z = step e^{i heading}) that
+  // maps the turtle's walk with unit step and heading 0 onto the node end points.
+  const double unit_delta = (result.angle_deg ? *result.angle_deg : delta) * std::numbers::pi / 180;
+  std::vector<std::complex<double>> walk(n);
+  for (std::size_t v = 0; v < n; ++v) walk[v] = std::polar(std::exp(exponent[v] * log_scale), summed[v] * unit_delta);
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t c : tree.children[p]) walk[c] += walk[p];  // parents come before children
+  const Vec2 origin = tree.nodes.front().start;
+  std::complex<double> numerator = 0;
+  double denominator = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const Vec2 end = tree.nodes[v].end - origin;
+    numerator += std::conj(walk[v]) * std::complex<double>(end.x(), end.y());
+    denominator += std::norm(walk[v]);
+  }
+  const std::complex<double> z = denominator > 0 ? numerator / denominator : std::complex<double>(0);
+  result.step = std::abs(z);
+  result.heading_deg = std::arg(z) * 180 / std::numbers::pi;
   for (std::size_t v = 0; v < n; ++v) {
     const double expected = result.step * std::exp(exponent[v] * log_scale);
     if (expected > 0) result.worst_length_error = std::max(result.worst_length_error, std::abs(length_of(tree.nodes[v]) - expected) / expected);
   }
-  result.heading_deg = heading_of(tree.nodes.front());
 
   // Depth-first writing with an explicit stack (chains may be thousands of segments deep).
   struct Item {

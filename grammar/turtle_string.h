@@ -29,8 +29,10 @@ TurtleParameters estimate_turtle_parameters(const InstanceTree& tree);
 struct TurtleString {
   std::string text;               ///< one character per symbol: F + - [ ] *
   std::optional<double> angle_deg;  ///< δ refined on the absolute headings (see tree_turtle_string)
-  double step = 0;                ///< length of F at scale 1, drawing units (mean over nodes)
-  double heading_deg = 0;         ///< heading of the root segment, degrees counter-clockwise
+  double step = 0;                ///< length of F at scale 1, drawing units
+  double heading_deg = 0;         ///< start heading, degrees counter-clockwise
+                                  ///< (step and heading: the least-squares similarity that maps the
+                                  ///< turtle's walk onto all segment end points, so errors do not add up)
   double worst_turn_error_deg = 0;  ///< largest |turn - k δ| over the links
   double worst_length_error = 0;    ///< largest relative |length - step s^j| over the nodes
   bool expressible = true;          ///< false when a link grows the length (needs a `/`)

@@ -7,10 +7,12 @@
 #include "geometry/errors.h"
 #include "geometry/png_reader.h"
 #include "geometry/svg_reader.h"
+#include "grammar/generalization.h"
 #include "grammar/grammar_length.h"
 #include "grammar/inference_drawing.h"
 #include "grammar/inference_pixels.h"
 #include "grammar/lsystem_json.h"
+#include "grammar/lsystem_text.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -20,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace dg::cli {
 
@@ -29,6 +32,7 @@ struct InferOptions {
   std::string input;
   std::string output;
   bool json = false;
+  std::optional<double> generalize_w0;
   DrawingInferenceOptions inference;
 };
 
@@ -70,6 +74,16 @@ void run_infer(const InferOptions& options) {
       throw InputError(options.input + ": " + error.what());
     }
   }
+  std::vector<RuleMerge> merges;
+  if (options.generalize_w0) {
+    GeneralizationOptions generalization;
+    generalization.w0 = *options.generalize_w0;
+    Generalization general = generalize(inferred.lsystem, generalization);
+    merges = general.merges;
+    inferred.lsystem = std::move(general.system);
+    inferred.text = "# " + inferred.method + " inference, generalized with w0 = " + fmt::format("{}", generalization.w0) + ": " +
+                    std::to_string(merges.size()) + " merges\n" + format_lsystem_text(inferred.lsystem);
+  }
   nlohmann::ordered_json json = lsystem_to_json(inferred.lsystem);
   json["grammar_length"] = grammar_length(inferred.lsystem);
   json["start_svg"] = {inferred.start_svg.x(), inferred.start_svg.y()};
@@ -77,6 +91,11 @@ void run_infer(const InferOptions& options) {
   json["terminals"] = inferred.terminals;
   json["method"] = inferred.method;
   json["comparison"] = inferred.comparison;
+  if (options.generalize_w0) {
+    json["merges"] = nlohmann::ordered_json::array();
+    for (const RuleMerge& m : merges)
+      json["merges"].push_back({{"kept", m.kept}, {"merged", m.merged}, {"edit_distance", m.edit_distance}, {"cost", m.cost}});
+  }
   json["timings_s"] = {{"instancing", inferred.timings.instancing_s},
                        {"rules", inferred.timings.rules_s},
                        {"total", inferred.timings.total_s}};
@@ -110,6 +129,10 @@ void add_lsystem_infer_subcommand(CLI::App& lsystem) {
   command->add_option("--w-h", w.w_h, "importance weight of proximity (merge neighbours first)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_option("--w-phi", w.w_phi, "importance weight of element similarity")->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_option("--w-l", w.w_l, "importance weight of sequence length")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--generalize", options->generalize_w0,
+                      "merge similar rules into stochastic ones (Guo et al. 2020 §4.3) with weight W0 in [0, 1] of the length change "
+                      "against the edit distance")
+      ->check(CLI::Range(0.0, 1.0));
   command->add_option("--similarity", options->inference.vector.similarity.threshold, "element similarity threshold")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
