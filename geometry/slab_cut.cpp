@@ -85,7 +85,7 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
   return static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), s) - cuts.begin());
 }
 
-void weld_vertices(TriangleMesh& mesh, double tolerance) {
+std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, const std::vector<char>* only) {
   const double cell = std::max(tolerance, 1e-300) * 4.0;
   auto key = [&](const Vec3& p) {
     return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / cell)),
@@ -108,6 +108,12 @@ void weld_vertices(TriangleMesh& mesh, double tolerance) {
   next.reserve(mesh.positions.size());
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3& p = mesh.positions[v];
+    if (only && !(*only)[v]) {  // kept as it is, never merged
+      remap[v] = static_cast<std::uint32_t>(kept.size());
+      kept.push_back(p);
+      next.push_back(kEnd);
+      continue;
+    }
     const auto k = key(p);
     std::uint32_t found = kEnd;
     for (std::int64_t dx = -1; dx <= 1 && found == kEnd; ++dx)
@@ -138,6 +144,7 @@ void weld_vertices(TriangleMesh& mesh, double tolerance) {
   }
   mesh.positions = std::move(kept);
   mesh.triangles = std::move(triangles);
+  return remap;
 }
 
 }  // namespace dg

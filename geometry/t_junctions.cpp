@@ -13,11 +13,17 @@ using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
 
 // Boundary edges (used by one triangle) with the triangle and the corner where the edge starts,
 // sorted by edge.
-std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> boundary_edges(const TriangleMesh& mesh) {
+// With `only`, just the edges whose two ends are flagged (their other uses are edges of the
+// same kind, so the counts stay right).
+std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> boundary_edges(const TriangleMesh& mesh, const std::vector<char>* only) {
   std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> uses;
-  uses.reserve(3 * mesh.triangles.size());
+  uses.reserve(only ? 0 : 3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) uses.push_back({std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), {t, k}});
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      if (only && !((*only)[a] && (*only)[b])) continue;
+      uses.push_back({std::minmax(a, b), {t, k}});
+    }
   std::sort(uses.begin(), uses.end());
   std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> single;
   for (std::size_t i = 0; i < uses.size();) {
@@ -31,11 +37,18 @@ std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> boundary_edges(cons
 
 }  // namespace
 
-std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance) {
-  weld_vertices(mesh, tolerance);
+std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<char>* seam_vertices) {
+  std::vector<char> seam;
+  const std::vector<std::uint32_t> remap = weld_vertices(mesh, tolerance, seam_vertices);
+  if (seam_vertices) {
+    seam.assign(mesh.positions.size(), 0);
+    for (std::size_t v = 0; v < remap.size(); ++v)
+      if ((*seam_vertices)[v]) seam[remap[v]] = 1;
+  }
+  const std::vector<char>* only = seam_vertices ? &seam : nullptr;
   std::size_t splits = 0;
   for (int pass = 0; pass < 4; ++pass) {
-    const auto edges = boundary_edges(mesh);
+    const auto edges = boundary_edges(mesh, only);
     if (edges.empty()) break;
     // Boundary vertices in a spatial hash with cells about as long as a boundary edge.
     double edge_length = 0.0;

@@ -5,6 +5,7 @@
 #include "grammar/random.h"
 #include "synthesis/piece_collision.h"
 
+#include <algorithm>
 #include <deque>
 #include <stdexcept>
 
@@ -30,6 +31,23 @@ std::vector<SeamPlane> seams_of(const ContextFreeGrammar& g, const ShapeProducti
   return seams;
 }
 
+// Flags the vertices of a piece that lie on an edge used by only one of its triangles.
+std::vector<char> open_vertices(const TriangleMesh& mesh) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> open(mesh.positions.size(), 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) open[edges[i].first] = open[edges[i].second] = 1;
+    i = j;
+  }
+  return open;
+}
+
 }  // namespace
 
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
@@ -42,15 +60,21 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
   PieceCollisions collisions(options.seam_tolerance > 0 ? options.seam_tolerance : eps);
   std::size_t triangles = 0;
   std::deque<OpenSlot> open;
-  auto place = [&](const ShapeProduction& p, const RigidTransform& world, int depth) {
+  std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
+  std::vector<std::vector<char>> open_of(grammar.productions.size() + 1);  // cache; the axiom last
+  auto place = [&](std::size_t index, const RigidTransform& world, int depth) {
+    const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
     const TriangleMesh piece = transformed(p.terminal, world);
     collisions.add(piece);
+    std::vector<char>& open_edges = open_of[std::min(index, grammar.productions.size())];
+    if (open_edges.size() != p.terminal.positions.size()) open_edges = open_vertices(p.terminal);
+    seam_vertices.insert(seam_vertices.end(), open_edges.begin(), open_edges.end());
     append_mesh(result.mesh, piece);
     if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
     triangles += piece.triangles.size();
     for (const ChildSlot& c : p.children) open.push_back({c, world.after(c.placement), depth + 1});
   };
-  place(grammar.axiom, RigidTransform{}, 0);
+  place(grammar.productions.size(), RigidTransform{}, 0);
 
   while (!open.empty()) {
     const OpenSlot slot = open.front();
@@ -77,9 +101,9 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
       if (!placed) ++result.fallbacks;
     }
     result.productions.push_back(chosen);
-    place(grammar.productions[chosen], slot.world, slot.depth);
+    place(chosen, slot.world, slot.depth);
   }
-  if (options.weld_seams) resolve_t_junctions(result.mesh, 1e-6 * eps);
+  if (options.weld_seams) resolve_t_junctions(result.mesh, 1e-6 * eps, &seam_vertices);
   return result;
 }
 
