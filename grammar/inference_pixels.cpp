@@ -116,19 +116,27 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
     if (auto tree = infer_segment_lsystem(steps, false, segment_options))
       keep_shorter(best, std::move(*tree), comparison, "instance tree on steps");
   const bool tree_has_rule = best && best->rules > 0;
-  // Motif drawings: every stroke component is one element.
+  // Motif drawings: every stroke component is one element; specks (components spanning fewer
+  // than min_piece_px) are left out.
+  std::vector<std::vector<std::size_t>> motifs;
   std::size_t all_points = 0, largest = 0;
   for (const auto& component : components) {
     std::size_t points = 0;
-    for (std::size_t c : component) points += graph.chains[c].points.size();
+    Vec2 low = graph.chains[component.front()].points.front(), high = low;
+    for (std::size_t c : component) {
+      points += graph.chains[c].points.size();
+      for (const Vec2& p : graph.chains[c].points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    }
+    if ((high - low).norm() < options.min_piece_px) continue;
+    motifs.push_back(component);
     all_points += points;
     largest = std::max(largest, points);
   }
-  const bool motif_like = components.size() >= 4 && components.size() <= options.max_components &&
+  const bool motif_like = motifs.size() >= 4 && motifs.size() <= options.max_components &&
                           static_cast<double>(largest) <= options.max_component_share * static_cast<double>(all_points);
   if (motif_like) {
     SvgDrawing drawing;
-    for (const auto& component : components) {
+    for (const auto& component : motifs) {
       std::vector<std::vector<Vec2>> polylines;
       for (std::size_t c : component) {
         std::vector<Vec2> simplified;

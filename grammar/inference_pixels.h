@@ -22,9 +22,9 @@ struct PixelInferenceOptions {
   double join_px = 3;                ///< piece ends closer than this many 512ths of the diagonal are one point
                                      ///< (bridges skeleton gaps at junctions)
   double corner_tolerance_px = 1.2;  ///< Douglas–Peucker tolerance of the straight pieces
-  std::size_t max_components = 150;  ///< the vector path on components runs for 4 to this many components
+  std::size_t max_components = 2500;  ///< the vector path on components runs for 4 to this many components
   double max_component_share = 0.2;  ///< ... when no component holds more than this share of the skeleton
-  std::size_t max_vector_pieces = 400;  ///< the vector path on pieces runs up to this many pieces
+  std::size_t max_vector_pieces = 250;  ///< the vector path on pieces runs up to this many pieces
   int max_component_rules = 20;      ///< rule budget of the vector path on components (each rule re-runs the
                                      ///< cluster analysis; pixel templates vary more than vector ones)
   double max_turn_error_deg = 15;    ///< pixel corners are off by a pixel: looser than for vectors

@@ -1,14 +1,19 @@
-// Bench of the vector L-system inference (Št'ava et al. 2010): drawings of 100 to 5,000
-// elements are made by the L-system engine (a window grid, a branching tree of leaves, a spiral
-// of leaves with a linearly changing step, a bracketed plant of segments), then inferred.
-// Prints one line per drawing: kind, elements, seconds (instancing, rules, total), rules made,
-// grammar length. Usage: dockgrammar-bench-lsystem [--quick]
+// Bench of the L-system inference: drawings of 100 to 5,000 elements are made by the L-system
+// engine (a window grid, a branching tree of leaves, a spiral of leaves with a linearly changing
+// step, a bracketed plant of segments), then inferred from vectors (Št'ava et al. 2010; the plant
+// through the instance tree of Guo et al. 2020 when that is shorter); Koch islands and window
+// grids are also rasterized and inferred from pixels. Prints one line per drawing: kind,
+// elements, seconds, method, grammar length. Usage: dockgrammar-bench-lsystem [--quick]
 
 #include "geometry/svg_reader.h"
+#include "geometry/errors.h"
 #include "grammar/derivation.h"
 #include "grammar/grammar_length.h"
 #include "grammar/inference.h"
+#include "grammar/inference_drawing.h"
+#include "grammar/inference_pixels.h"
 #include "grammar/lsystem_text.h"
+#include "synthesis/render.h"
 #include "synthesis/turtle.h"
 
 #include <fmt/core.h>
@@ -43,6 +48,37 @@ void run(const std::string& kind, const std::string& text) {
   fmt::print("{:<10} {:>6} elements  {:>8.3f} s  (instancing {:.3f} s, rules {:.3f} s)  {:>4} rules  grammar length {}\n", kind,
              drawing.elements.size(), inferred.timings.total_s, inferred.timings.instancing_s, inferred.timings.rules_s,
              inferred.rules, dg::grammar_length(inferred.lsystem));
+}
+
+// The instance-tree-or-vector choice of `lsystem infer DRAWING.svg`.
+void run_choice(const std::string& kind, const std::string& text) {
+  const dg::SvgDrawing drawing = draw(text);
+  const dg::InferredLSystem inferred = dg::infer_drawing_lsystem(drawing);
+  fmt::print("{:<10} {:>6} elements  {:>8.3f} s  ({})  grammar length {}\n", kind, drawing.elements.size(), inferred.timings.total_s,
+             inferred.comparison, dg::grammar_length(inferred.lsystem));
+}
+
+// `lsystem infer PICTURE.png` on the drawing rasterized with the given long side.
+void run_pixels(const std::string& kind, const std::string& text, int long_side_px) {
+  const dg::LSystem system = dg::parse_lsystem_text(text, "bench");
+  const dg::Drawing drawing = dg::interpret(dg::derive(system).modules, dg::turtle_options(system.turtle));
+  dg::RenderOptions render;
+  render.long_side_px = long_side_px;
+  const dg::Image image = dg::rasterize(drawing, render);
+  dg::PixelInference result;
+  try {
+    result = dg::infer_pixel_lsystem(image);
+  } catch (const dg::InputError& error) {
+    fmt::print("{:<10} {:>6} elements  no result ({}x{} px): {}\n", kind, drawing.strokes.size(), image.width, image.height, error.what());
+    return;
+  }
+  fmt::print("{:<10} {:>6} elements  {:>8.3f} s  (front end {:.3f} s, {}x{} px, {} pieces; {})  grammar length {}\n", kind,
+             drawing.strokes.size(), result.inferred.timings.total_s, result.front_end.seconds, image.width, image.height,
+             result.front_end.pieces, result.inferred.comparison, dg::grammar_length(result.inferred.lsystem));
+}
+
+std::string koch_island(int iterations) {
+  return fmt::format("axiom: F-F-F-F\nangle: 90\nstep: 12\niterations: {}\nF -> F+F-F-FF+F+F-F\n", iterations);
 }
 
 std::string grid(int rows, int columns) {
@@ -80,5 +116,11 @@ int main(int argc, char** argv) {
     if (!quick || count <= 1184) run("spiral", spiral(count));
   for (int iterations : {3, 4, 5})
     if (!quick || iterations <= 4) run("plant", plant(iterations));
+  for (int iterations : {3, 4, 5, 6})
+    if (!quick || iterations <= 5) run_choice("plant-tree", plant(iterations));
+  // Pixels: about 10 px per Koch step, 40 px per window column.
+  for (int iterations : {1, 2, 3}) run_pixels("koch-px", koch_island(iterations), 24 * (1 << (2 * iterations)) + 64);
+  for (const auto& [rows, columns] : std::vector<std::pair<int, int>>{{10, 10}, {20, 25}, {32, 37}})
+    run_pixels("grid-px", grid(rows, columns), 40 * columns);
   return 0;
 }

@@ -4,6 +4,8 @@
 // the ground truth. Every case's figures are printed; the targets are asserted on the cases that
 // meet them (docs/lsystem-inference.md lists the others with their figures).
 
+#include "tests/grammar/inference_measure.h"
+
 #include "geometry/svg_reader.h"
 #include "grammar/derivation.h"
 #include "grammar/grammar_length.h"
@@ -17,10 +19,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <random>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace {
@@ -28,42 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using dg::Vec2;
 
-const fs::path corpus_dir = fs::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "lsystems";
-
-// Points every `spacing` units along the polylines.
-void densify(const std::vector<Vec2>& line, double spacing, std::vector<Vec2>& out) {
-  if (line.size() == 1) out.push_back(line.front());
-  for (std::size_t k = 1; k < line.size(); ++k) {
-    const Vec2 a = line[k - 1], b = line[k];
-    const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
-    for (int j = 0; j < n; ++j) out.push_back(a + (b - a) * (static_cast<double>(j) / n));
-    if (k + 1 == line.size()) out.push_back(b);
-  }
-}
-
-// Largest distance from a point of `from` to its nearest point of `to` (grid search).
-double directed_hausdorff(const std::vector<Vec2>& from, const std::vector<Vec2>& to, double cell) {
-  std::unordered_map<long long, std::vector<Vec2>> grid;
-  auto key = [](long long x, long long y) { return x * 4000037LL + y; };
-  for (const Vec2& p : to) grid[key(static_cast<long long>(std::floor(p.x() / cell)), static_cast<long long>(std::floor(p.y() / cell)))].push_back(p);
-  double worst = 0;
-  for (const Vec2& p : from) {
-    const long long cx = static_cast<long long>(std::floor(p.x() / cell)), cy = static_cast<long long>(std::floor(p.y() / cell));
-    double best = std::numeric_limits<double>::infinity();
-    for (long long ring = 0; ring < 100000; ++ring) {
-      for (long long x = cx - ring; x <= cx + ring; ++x)
-        for (long long y = cy - ring; y <= cy + ring; ++y) {
-          if (std::max(std::abs(x - cx), std::abs(y - cy)) != ring) continue;
-          const auto it = grid.find(key(x, y));
-          if (it == grid.end()) continue;
-          for (const Vec2& q : it->second) best = std::min(best, (p - q).norm());
-        }
-      if (best <= static_cast<double>(ring) * cell) break;
-    }
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
+const fs::path corpus_dir = dg::test::lsystem_corpus_dir();
 
 struct CaseFigures {
   double hausdorff_percent = 0;
@@ -73,33 +38,6 @@ struct CaseFigures {
   std::string text;
 };
 
-std::vector<Vec2> input_points(const dg::SvgDrawing& drawing, double spacing) {
-  std::vector<Vec2> points;
-  for (const auto& element : drawing.elements)
-    for (const auto& line : element.polylines) densify(line, spacing, points);
-  return points;
-}
-
-double diagonal_of(const std::vector<Vec2>& points) {
-  Vec2 low = points.front(), high = points.front();
-  for (const Vec2& p : points) low = low.cwiseMin(p), high = high.cwiseMax(p);
-  return (high - low).norm();
-}
-
-// Re-derivation of the inferred system on the input canvas (SVG coordinates).
-std::vector<Vec2> rederived_points(const dg::InferredLSystem& inferred, double spacing) {
-  const dg::Derivation derivation = dg::derive(inferred.lsystem);
-  const dg::Drawing drawing = dg::interpret(derivation.modules, dg::turtle_options(inferred.lsystem.turtle));
-  std::vector<Vec2> points;
-  for (const dg::Stroke& stroke : drawing.strokes)
-    for (const auto& line : dg::flatten_path(stroke.path, spacing / 2)) {
-      std::vector<Vec2> svg;
-      for (const Vec2& p : line) svg.emplace_back(inferred.start_svg.x() + p.x(), inferred.start_svg.y() - p.y());
-      densify(svg, spacing, points);
-    }
-  return points;
-}
-
 CaseFigures measure(const std::string& id) {
   CaseFigures f;
   const dg::SvgDrawing drawing = dg::read_svg(corpus_dir / (id + ".svg"));
@@ -107,14 +45,11 @@ CaseFigures measure(const std::string& id) {
   const dg::InferredLSystem inferred = dg::infer_lsystem(drawing);
   f.seconds = inferred.timings.total_s;
   f.text = inferred.text;
-  std::vector<Vec2> input = input_points(drawing, 1.0);
-  const double diagonal = diagonal_of(input);
+  const double diagonal = dg::test::diagonal_of(dg::test::drawing_points(drawing, 1.0));
   const double spacing = diagonal / 2000;
-  input = input_points(drawing, spacing);
-  const std::vector<Vec2> output = rederived_points(inferred, spacing);
-  const double cell = diagonal / 100;
-  const double h = output.empty() ? diagonal
-                                  : std::max(directed_hausdorff(input, output, cell), directed_hausdorff(output, input, cell));
+  const std::vector<Vec2> input = dg::test::drawing_points(drawing, spacing);
+  const std::vector<Vec2> output = dg::test::rederived_points(inferred, spacing);
+  const double h = output.empty() ? diagonal : dg::test::symmetric_hausdorff(input, output, diagonal / 100);
   f.hausdorff_percent = 100 * h / diagonal;
   f.length = dg::grammar_length(inferred.lsystem);
   f.gt_length = truth["grammar_length"].get<std::size_t>();
@@ -136,16 +71,6 @@ CaseFigures measure(const std::string& id) {
   return f;
 }
 
-std::vector<std::string> corpus_cases() {
-  std::vector<std::string> ids;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(corpus_dir, error))
-    if (entry.path().extension() == ".svg" && fs::exists(fs::path(entry.path()).replace_extension(".json")))
-      ids.push_back(entry.path().stem().string());
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
-
 // Cases that meet every target (Hausdorff < 1 %, length <= gt + 2, angle error < 1 degree on
 // clean and < 3 on jittered input, scale error < 0.05).
 const std::vector<std::string> asserted_cases = {"stava_helix_336", "stava_linear_dist_90", "stava_branch_paper_R4",
@@ -155,7 +80,7 @@ const std::vector<std::string> asserted_cases = {"stava_helix_336", "stava_linea
 }  // namespace
 
 TEST_CASE("inference: corpus figures", "[grammar][inference][corpus]") {
-  const std::vector<std::string> ids = corpus_cases();
+  const std::vector<std::string> ids = dg::test::lsystem_corpus_cases();
   if (ids.empty()) {
     WARN("corpus absent: " << corpus_dir.string());
     return;
