@@ -107,6 +107,7 @@ PixelInference infer_pixel_lsystem(const Image& image, const PixelInferenceOptio
   // Segment drawings: pieces as they are, and cut into equal steps.
   SegmentInferenceOptions segment_options = options.drawing.segments;
   segment_options.join_fraction = std::max(segment_options.join_fraction, options.join_px / 512);
+  segment_options.snap_angle_deg = std::max(segment_options.snap_angle_deg, options.snap_angle_deg);
   segment_options.max_turn_error_deg = std::max(segment_options.max_turn_error_deg, options.max_turn_error_deg);
   segment_options.max_length_error = std::max(segment_options.max_length_error, options.max_length_error);
   if (auto tree = infer_segment_lsystem(pieces, false, segment_options)) keep_shorter(best, std::move(*tree), comparison, "instance tree");

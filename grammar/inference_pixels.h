@@ -27,6 +27,7 @@ struct PixelInferenceOptions {
   std::size_t max_vector_pieces = 250;  ///< the vector path on pieces runs up to this many pieces
   int max_component_rules = 20;      ///< rule budget of the vector path on components (each rule re-runs the
                                      ///< cluster analysis; pixel templates vary more than vector ones)
+  double snap_angle_deg = 1;         ///< δ within this of 360/k becomes 360/k (SegmentInferenceOptions)
   double max_turn_error_deg = 15;    ///< pixel corners are off by a pixel: looser than for vectors
   double max_length_error = 0.35;    ///< (both also bounded by the segment options' own values)
   double min_piece_px = 2.5;         ///< inner pieces shorter than this or 0.4 times the median piece are

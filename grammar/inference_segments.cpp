@@ -119,7 +119,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
     if (tree.unreached > 0 || tree.nodes.empty()) return;
     const TurtleParameters parameters = estimate_turtle_parameters(tree);
     for (bool descending : {false, true}) {
-      TurtleString string = tree_turtle_string(tree, parameters, descending);
+      TurtleString string = tree_turtle_string(tree, parameters, descending, options.snap_angle_deg);
       const double turn_limit = std::min(options.max_turn_error_deg, 0.4 * parameters.angle_deg.value_or(90));
       if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)
@@ -166,7 +166,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   }
   result.text = text.str();
   result.lsystem = parse_lsystem_text(result.text, "inferred L-system");
-  result.start_svg = Vec2(best->start.x(), -best->start.y());
+  result.start_svg = Vec2(best->string.start.x(), -best->string.start.y());
   result.timings.instancing_s = tree_seconds;
   result.timings.total_s = seconds_since(start_time);
   result.timings.rules_s = result.timings.total_s - tree_seconds;

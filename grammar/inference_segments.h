@@ -20,6 +20,8 @@ struct SegmentInferenceOptions {
   double max_turn_error_deg = 6;    ///< a tree whose turns miss multiples of δ by more (or by 0.4 δ) is rejected
   double max_length_error = 0.2;    ///< ... or whose lengths miss step * s^j by more (relative)
   std::size_t max_block = 200;      ///< longest rule successor tried
+  double snap_angle_deg = 0;        ///< δ within this of 360/k (k = 3..36) becomes 360/k (pixel input:
+                                    ///< a pixel-measured δ off by half a degree no longer closes curves)
 };
 
 /// Infers `F -> block` for segments in y-up units. `directed`: each segment is walked from start

@@ -65,7 +65,8 @@ TurtleParameters estimate_turtle_parameters(const InstanceTree& tree) {
   return parameters;
 }
 
-TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns) {
+TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns,
+                                double snap_angle_deg) {
   TurtleString result;
   const std::size_t n = tree.nodes.size();
   if (n == 0) return result;
@@ -104,6 +105,11 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
       }
       if (cost < best_cost) best_cost = cost, result.angle_deg = candidate;
     }
+    for (int k = 3; k <= 36; ++k)
+      if (std::abs(*result.angle_deg - 360.0 / k) <= snap_angle_deg) {
+        result.angle_deg = 360.0 / k;
+        break;
+      }
   }
   // Step and heading: the least-squares similarity (complex factor z = step e^{i heading}) that
   // maps the turtle's walk with unit step and heading 0 onto the node end points.
@@ -112,15 +118,27 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
   for (std::size_t v = 0; v < n; ++v) walk[v] = std::polar(std::exp(exponent[v] * log_scale), summed[v] * unit_delta);
   for (std::size_t p = 0; p < n; ++p)
     for (std::size_t c : tree.children[p]) walk[c] += walk[p];  // parents come before children
+  // Ends relative to the root's start, both sets centred (the root's start is measured too).
   const Vec2 origin = tree.nodes.front().start;
+  std::complex<double> mean_walk = 0, mean_end = 0;
+  std::vector<std::complex<double>> ends(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Vec2 end = tree.nodes[v].end - origin;
+    ends[v] = {end.x(), end.y()};
+    mean_walk += walk[v];
+    mean_end += ends[v];
+  }
+  mean_walk /= static_cast<double>(n);
+  mean_end /= static_cast<double>(n);
   std::complex<double> numerator = 0;
   double denominator = 0;
   for (std::size_t v = 0; v < n; ++v) {
-    const Vec2 end = tree.nodes[v].end - origin;
-    numerator += std::conj(walk[v]) * std::complex<double>(end.x(), end.y());
-    denominator += std::norm(walk[v]);
+    numerator += std::conj(walk[v] - mean_walk) * (ends[v] - mean_end);
+    denominator += std::norm(walk[v] - mean_walk);
   }
   const std::complex<double> z = denominator > 0 ? numerator / denominator : std::complex<double>(0);
+  const std::complex<double> shift = mean_end - z * mean_walk;
+  result.start = origin + Vec2(shift.real(), shift.imag());
   result.step = std::abs(z);
   result.heading_deg = std::arg(z) * 180 / std::numbers::pi;
   for (std::size_t v = 0; v < n; ++v) {

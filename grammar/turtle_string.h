@@ -31,7 +31,8 @@ struct TurtleString {
   std::optional<double> angle_deg;  ///< δ refined on the absolute headings (see tree_turtle_string)
   double step = 0;                ///< length of F at scale 1, drawing units
   double heading_deg = 0;         ///< start heading, degrees counter-clockwise
-                                  ///< (step and heading: the least-squares similarity that maps the
+  Vec2 start = Vec2::Zero();      ///< where the turtle starts, drawing units
+                                  ///< (step, heading, start: the least-squares similarity that maps the
                                   ///< turtle's walk onto all segment end points, so errors do not add up)
   double worst_turn_error_deg = 0;  ///< largest |turn - k δ| over the links
   double worst_length_error = 0;    ///< largest relative |length - step s^j| over the nodes
@@ -40,12 +41,14 @@ struct TurtleString {
 
 /// Every node's heading should be the root's plus K δ, K its summed turn steps; δ is refined by
 /// a search within ±5 degrees of the estimate (0.01 degree steps) for the least squared heading
-/// residuals, which does not add up pixel errors along long chains as turns do.
+/// residuals, which does not add up pixel errors along long chains as turns do; a refined δ within
+/// `snap_angle_deg` of 360/k (k = 3..36) becomes 360/k.
 /// Writes the tree depth first: a node is its turn (`+` or `-` repeated k times for k δ), its
 /// scale change (`*` repeated j times for s^j), then `F`; its children follow, each in brackets
 /// except the one with the largest subtree, which continues the branch unbracketed and comes
 /// last. Bracketed children come smallest subtree first, ties by turn (ascending, or descending
 /// with `descending_turns`), then by input order.
-TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns);
+TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns,
+                                double snap_angle_deg = 0);
 
 }  // namespace dg
