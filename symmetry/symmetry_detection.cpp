@@ -40,6 +40,21 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   candidate_options.eps = eps;
   CandidateStats candidate_stats;
   std::vector<Candidate> candidates = find_candidates(keypoints, centre, candidate_options, &candidate_stats);
+  if (prepared.model.is_point_cloud()) {
+    // Cloud keypoints of one corner can lie a few voxels apart, proposing tiny motions that
+    // slide flat walls along themselves; densely sampled walls match under any such slide.
+    // Keep motions that move some corner of the bounding box by more than 2 r.
+    const BoundingBox box = prepared.model.bounds();
+    std::erase_if(candidates, [&](const Candidate& c) {
+      double largest = 0.0;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p((corner & 1) ? box.max.x() : box.min.x(), (corner & 2) ? box.max.y() : box.min.y(),
+                     (corner & 4) ? box.max.z() : box.min.z());
+        largest = std::max(largest, (c.transform.apply(p) - p).norm());
+      }
+      return largest <= 2.0 * surface.r();
+    });
+  }
   result.stats.keypoints = candidate_stats.keypoints;
   result.stats.pair_transforms = candidate_stats.pair_transforms;
   result.stats.candidates = candidates.size();

@@ -176,3 +176,26 @@ TEST_CASE("docking sites of the fence: insert at the far end, delete at the near
   CHECK(inserts == 2);
   CHECK(deletes == 2);
 }
+
+TEST_CASE("gear: no docker for its full rotation group; pipe tree: productions that recurse", "[grammar][context_free]") {
+  {
+    const Analysed gear = analyse("gear", {{"teeth", 12}});
+    // Every rotation of the group maps the whole gear onto itself: nothing is non-symmetric,
+    // so no docking site, no docker and no context-free rule.
+    CHECK(gear.sites.sites.empty());
+    CHECK(gear.grammar.empty());
+  }
+  const Analysed tree = analyse("pipe_tree", {{"depth", 3}});
+  REQUIRE_FALSE(tree.grammar.empty());
+  // Some non-terminal can derive itself again (directly or through others): trees of any depth.
+  const std::size_t n = tree.grammar.nonterminals.size();
+  std::vector<std::vector<char>> reaches(n, std::vector<char>(n, 0));
+  for (const dg::ShapeProduction& p : tree.grammar.productions)
+    for (const dg::ChildSlot& c : p.children) reaches[p.lhs][c.nonterminal] = 1;
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) reaches[i][j] = reaches[i][j] || (reaches[i][k] && reaches[k][j]);
+  bool recursive = false;
+  for (std::size_t i = 0; i < n; ++i) recursive = recursive || reaches[i][i];
+  CHECK(recursive);
+}
