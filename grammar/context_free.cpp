@@ -2,6 +2,7 @@
 
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
+#include "grammar/cell_sets.h"
 #include "grammar/random.h"
 
 #include <Eigen/Eigenvalues>
@@ -42,13 +43,6 @@ bool share_a_cell(const Cells& a, const Cells& b) {
       ++j;
   }
   return false;
-}
-
-double share_inside(const Cells& cells, const std::vector<char>& mask) {
-  if (cells.empty()) return 0.0;
-  std::size_t inside = 0;
-  for (std::uint32_t c : cells) inside += mask[c] ? 1 : 0;
-  return static_cast<double>(inside) / static_cast<double>(cells.size());
 }
 
 struct Plane {
@@ -142,12 +136,6 @@ bool orient_towards_docker(const VoxelSurface& surface, const Node& node, const 
     std::swap(positive, negative);
   }
   return positive >= 0.8 * static_cast<double>(total);
-}
-
-std::vector<char> mask_of(const Cells& cells, std::size_t count) {
-  std::vector<char> mask(count, 0);
-  for (std::uint32_t c : cells) mask[c] = 1;
-  return mask;
 }
 
 // Random maximal independent sets of the conflict graph over `items` (paper: a random start,

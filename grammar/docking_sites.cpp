@@ -1,5 +1,6 @@
 #include "grammar/docking_sites.h"
 
+#include "grammar/cell_sets.h"
 #include "symmetry/slippage.h"
 #include "symmetry/symmetric_region.h"
 
@@ -31,12 +32,6 @@ Cells cells_of(const std::vector<char>& mask) {
   for (std::uint32_t c = 0; c < mask.size(); ++c)
     if (mask[c]) out.push_back(c);
   return out;
-}
-
-std::vector<char> mask_of(const Cells& cells, std::size_t count) {
-  std::vector<char> mask(count, 0);
-  for (std::uint32_t c : cells) mask[c] = 1;
-  return mask;
 }
 
 // Connected components (26-adjacency) of the cells whose mask is set; -1 elsewhere.
@@ -75,13 +70,6 @@ double area_of(const VoxelSurface& surface, const Cells& cells) {
   double area = 0.0;
   for (std::uint32_t c : cells) area += surface.area(c);
   return area;
-}
-
-double shared_fraction(const Cells& of, const std::vector<char>& in) {
-  if (of.empty()) return 0.0;
-  std::size_t shared = 0;
-  for (std::uint32_t c : of) shared += in[c] ? 1 : 0;
-  return static_cast<double>(shared) / static_cast<double>(of.size());
 }
 
 // Slippage dimension of the planes inside the band cells.
@@ -161,8 +149,8 @@ std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker,
 OperationKind classify(const DockingSite& s, std::size_t cell_count, double containment) {
   const std::vector<char> docker = mask_of(s.docker, cell_count);
   const std::vector<char> secondary = mask_of(s.secondary_docker, cell_count);
-  const bool secondary_inside = shared_fraction(s.secondary_docker, docker) >= containment;
-  const bool docker_inside = shared_fraction(s.docker, secondary) >= containment;
+  const bool secondary_inside = share_inside(s.secondary_docker, docker) >= containment;
+  const bool docker_inside = share_inside(s.docker, secondary) >= containment;
   if (secondary_inside && s.secondary_docker.size() < s.docker.size()) return OperationKind::insert;
   if (docker_inside && s.docker.size() < s.secondary_docker.size()) return OperationKind::remove;
   return OperationKind::replace;
