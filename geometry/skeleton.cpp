@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 namespace dg {
 
@@ -78,8 +79,7 @@ BinaryImage thin(const BinaryImage& binary) {
         for (int x = 0; x < b.width; ++x) {
           if (!b.at(x, y)) continue;
           const auto p = neighbours(b, x, y);
-          int count = 0;
-          for (int v : p) count += v;
+          const int count = std::accumulate(p.begin(), p.end(), 0);
           if (count < 2 || count > 6 || transitions(p) != 1) continue;
           // P2 P4 P6 / P4 P6 P8 in the first pass, P2 P4 P8 / P2 P6 P8 in the second.
           const bool a = pass == 0 ? !(p[0] && p[2] && p[4]) : !(p[0] && p[2] && p[6]);
@@ -96,9 +96,7 @@ BinaryImage thin(const BinaryImage& binary) {
     for (int x = 0; x < b.width; ++x) {
       if (!b.at(x, y)) continue;
       const auto p = neighbours(b, x, y);
-      int count = 0;
-      for (int v : p) count += v;
-      if (count != 2) continue;
+      if (std::accumulate(p.begin(), p.end(), 0) != 2) continue;
       for (int k = 0; k < 8; k += 2)
         if (p[k] && p[(k + 2) % 8]) b.ink[static_cast<std::size_t>(y) * b.width + x] = 0;
     }
