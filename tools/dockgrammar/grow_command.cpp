@@ -103,11 +103,18 @@ void run_grow(const GrowOptions& options) {
   RenderOptions render;
   render.long_side_px = options.size;
   render.line_width_px = options.line_width;
-  const Drawing drawing = growth_drawing(scene, result);
-  if (extension == ".svg")
+  Drawing drawing = growth_drawing(scene, result);
+  if (extension == ".svg") {
+    // Scene units are often small (a palm 2 units tall): scale so the page is --size wide in SVG
+    // units too, as viewers take width and height as pixels.
+    const PageFrame frame = page_frame(drawing, render.margin_fraction);
+    const double factor = options.size / std::max(frame.width, frame.height);
+    for (Stroke& stroke : drawing.strokes)
+      stroke.path = map_path(stroke.path, [&](const Vec2& p) { return Vec2(p * factor); });
     write_svg(options.output, drawing, render);
-  else
+  } else {
     write_png(options.output, rasterize(drawing, render));
+  }
 
   int tokens_used = 0;
   for (const TokenState& token : result.tokens) tokens_used += token.used;
@@ -157,7 +164,7 @@ void add_grow_command(CLI::App& app) {
   grow_command->add_option("--edit", options->edits,
                            "edits (JSON) applied after growing; only the changed guides and their dependents regrow")
       ->check(CLI::ExistingFile);
-  grow_command->add_option("--size", options->size, "PNG: pixels along the longer side")
+  grow_command->add_option("--size", options->size, "pixels along the longer side (SVG: its width or height)")
       ->capture_default_str()
       ->check(CLI::Range(16, 16384));
   grow_command->add_option("--line-width", options->line_width, "line width in PNG pixels")
