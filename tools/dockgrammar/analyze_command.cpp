@@ -59,7 +59,8 @@ void add_analyze_command(CLI::App& app) {
     if (progress) progress("context-free rules", 0.0);
     ContextFreeOptions cf_options;
     cf_options.seed = options->seed;
-    grammar.context_free = build_context_free_grammar(prepared, docking, cf_options);
+    ContextFreeStats cf_stats;
+    grammar.context_free = build_context_free_grammar(prepared, docking, cf_options, &cf_stats);
     grammar_timings.push_back({"context-free rules", stopwatch.lap()});
 
     const std::filesystem::path folder(options->output);
@@ -69,7 +70,7 @@ void add_analyze_command(CLI::App& app) {
     std::string stem = std::filesystem::path(options->model.model_path).stem().string();
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
-    AnalysisReport report{prepared, symmetries, grammar, docking, grammar_timings, grammar_path};
+    AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path};
     write_analysis_report(folder / (stem + ".report.md"), report);
     write_analysis_pictures(folder, stem, report);
     if (options->model.json)

@@ -93,7 +93,10 @@ std::string context_free_markdown(const AnalysisReport& report) {
       report.docking.sites.size(), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.collides; }),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }));
-  if (cf.empty()) return md + "No context-free production was built.\n\n";
+  if (cf.empty())
+    return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
+                            "paper), {} have no planar seam to cut along.\n\n",
+                            report.context_free.sites_slippable, report.context_free.sites_not_planar);
   md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
@@ -128,7 +131,8 @@ std::string analysis_text(const AnalysisReport& report) {
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
                      ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
   if (cf.empty())
-    out += "context-free rules: none (no docking site with a planar seam that repeats)\n";
+    out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have no planar seam)\n",
+                       report.context_free.sites_slippable, report.context_free.sites_not_planar);
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom (generate makes random variants)\n",
                        cf.nonterminals.size(), cf.productions.size());

@@ -2,6 +2,7 @@
 // What `analyze` tells the user: text summary, JSON summary, Markdown report and pictures.
 
 #include "geometry/prepared_model.h"
+#include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
 #include "symmetry/symmetry_detection.h"
@@ -18,6 +19,7 @@ struct AnalysisReport {
   const SymmetryResult& symmetries;
   const ShapeGrammar& grammar;
   const DockingSiteResult& docking;
+  ContextFreeStats context_free;             ///< what became of the docking sites
   std::vector<StageTiming> grammar_timings;  ///< grid rules, docking sites, context-free rules
   std::filesystem::path grammar_path;
 };
