@@ -4,6 +4,7 @@
 #include "geometry/submesh.h"
 #include "grammar/cell_sets.h"
 #include "grammar/random.h"
+#include "symmetry/symmetric_region.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -70,24 +71,6 @@ struct Relation {
   std::size_t from, to;
   RigidTransform motion;  // frame(to) = motion after frame(from)
 };
-
-// The occupied cell nearest to a point (its own voxel first, then the 3x3x3 block around it).
-std::int64_t cell_at(const VoxelSurface& surface, const Vec3& p) {
-  const VoxelCoord v = surface.voxel_of(p);
-  const std::int64_t direct = surface.find(v);
-  if (direct >= 0) return direct;
-  std::int64_t best = -1;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int dx = -1; dx <= 1; ++dx)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dz = -1; dz <= 1; ++dz) {
-        const std::int64_t c = surface.find({v[0] + dx, v[1] + dy, v[2] + dz});
-        if (c < 0) continue;
-        const double d = (surface.centre(static_cast<std::uint32_t>(c)) - p).squaredNorm();
-        if (d < best_distance) best_distance = d, best = c;
-      }
-  return best;
-}
 
 // Least-squares plane through the band's cell centres, oriented towards the docker; nothing
 // when the band is not flat within `flatness` or the docker is not on one side of it.
@@ -343,7 +326,7 @@ class Builder {
                  std::size_t t) const {
     const auto corners = mesh.corners(t);
     const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-    const std::int64_t cell = cell_at(surface_, centroid);
+    const std::int64_t cell = nearest_cell(surface_, centroid);
     if (cell < 0) return false;
     if (docker[static_cast<std::size_t>(cell)]) return true;
     return site[static_cast<std::size_t>(cell)] && node.seam.distance(centroid) > 0;

@@ -12,33 +12,28 @@ CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, c
       offset_tolerance_(options.offset_tolerance_eps * surface.eps()),
       point_tolerance_(options.point_tolerance_eps * surface.eps()), point_fraction_(options.point_match_fraction) {}
 
-void CellMatcher::block_cells(const VoxelCoord& v, std::vector<std::uint32_t>& out) const {
-  out.clear();
+std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p) {
+  const VoxelCoord v = surface.voxel_of(p);
+  const std::int64_t direct = surface.find(v);
+  if (direct >= 0) return direct;
+  std::int64_t best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
   for (int dx = -1; dx <= 1; ++dx)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dz = -1; dz <= 1; ++dz) {
-        const std::int64_t c = surface_.find({v[0] + dx, v[1] + dy, v[2] + dz});
-        if (c >= 0) out.push_back(static_cast<std::uint32_t>(c));
+        const std::int64_t c = surface.find({v[0] + dx, v[1] + dy, v[2] + dz});
+        if (c < 0) continue;
+        const double d = (surface.centre(static_cast<std::uint32_t>(c)) - p).squaredNorm();
+        if (d < best_distance) {
+          best_distance = d;
+          best = c;
+        }
       }
+  return best;
 }
 
 std::int64_t CellMatcher::image_cell(std::uint32_t cell, const RigidTransform& t) const {
-  const Vec3 image = t.apply(surface_.centre(cell));
-  const VoxelCoord v = surface_.voxel_of(image);
-  const std::int64_t direct = surface_.find(v);
-  if (direct >= 0) return direct;
-  std::vector<std::uint32_t> block;
-  block_cells(v, block);
-  std::int64_t best = -1;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::uint32_t c : block) {
-    const double d = (surface_.centre(c) - image).squaredNorm();
-    if (d < best_distance) {
-      best_distance = d;
-      best = c;
-    }
-  }
-  return best;
+  return nearest_cell(surface_, t.apply(surface_.centre(cell)));
 }
 
 namespace {

@@ -19,6 +19,10 @@ struct RegionOptions {
   double point_match_fraction = 0.7;     ///< point clouds: share of a cell's points that must match
 };
 
+/// Cell of the voxel holding point p (model units), or the occupied voxel of the 3x3x3 block
+/// around it whose centre is nearest (the first in x, y, z block order on ties); -1 if none.
+std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p);
+
 /// Decides whether single cells are symmetric under a motion by comparing exact geometry.
 class CellMatcher {
  public:
@@ -37,9 +41,6 @@ class CellMatcher {
   bool symmetric(std::uint32_t cell, const RigidTransform& t, const RigidTransform& inverse) const;
 
  private:
-  // Occupied cells in the 3x3x3 block around voxel v.
-  void block_cells(const VoxelCoord& v, std::vector<std::uint32_t>& out) const;
-
   const VoxelSurface& surface_;
   const PointCloud* cloud_;
   double cos_tolerance_, offset_tolerance_, point_tolerance_, point_fraction_;

@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 
 namespace dg {
@@ -19,13 +20,12 @@ void triangle_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* mesh = static_cast<const TriangleMesh*>(args->geometryUserPtr);
   BoundingBox box;
   for (const Vec3& p : mesh->corners(args->primID)) box.add(p);
+  // Padded a little so float rounding never loses a touching pair.
+  auto lower = [](double v) { return static_cast<float>(v) - 1e-4f * (1.0f + std::abs(static_cast<float>(v))); };
+  auto upper = [](double v) { return static_cast<float>(v) + 1e-4f * (1.0f + std::abs(static_cast<float>(v))); };
   RTCBounds* out = args->bounds_o;
-  out->lower_x = static_cast<float>(box.min.x()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.x())));
-  out->lower_y = static_cast<float>(box.min.y()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.y())));
-  out->lower_z = static_cast<float>(box.min.z()) - 1e-4f * (1.0f + std::abs(static_cast<float>(box.min.z())));
-  out->upper_x = static_cast<float>(box.max.x()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.x())));
-  out->upper_y = static_cast<float>(box.max.y()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.y())));
-  out->upper_z = static_cast<float>(box.max.z()) + 1e-4f * (1.0f + std::abs(static_cast<float>(box.max.z())));
+  out->lower_x = lower(box.min.x()), out->lower_y = lower(box.min.y()), out->lower_z = lower(box.min.z());
+  out->upper_x = upper(box.max.x()), out->upper_y = upper(box.max.y()), out->upper_z = upper(box.max.z());
 }
 
 RTCScene make_scene(RTCDevice device, const TriangleMesh& mesh) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <optional>
 #include <stdexcept>
 
 namespace dg {
@@ -61,47 +62,49 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
   std::size_t triangles = 0;
   std::deque<OpenSlot> open;
   std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
-  std::vector<std::vector<char>> open_of(grammar.productions.size() + 1);  // cache; the axiom last
-  auto place = [&](std::size_t index, const RigidTransform& world, int depth) {
+  std::vector<std::vector<char>> open_of(grammar.productions.size() + 1);  // cache, filled on first use; the axiom last
+  std::vector<char> open_known(grammar.productions.size() + 1, 0);
+  // Adds production `index` (the axiom for productions.size()) already moved to `world` as `piece`.
+  auto place = [&](std::size_t index, const RigidTransform& world, int depth, const TriangleMesh& piece) {
     const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
-    const TriangleMesh piece = transformed(p.terminal, world);
     collisions.add(piece);
-    std::vector<char>& open_edges = open_of[std::min(index, grammar.productions.size())];
-    if (open_edges.size() != p.terminal.positions.size()) open_edges = open_vertices(p.terminal);
-    seam_vertices.insert(seam_vertices.end(), open_edges.begin(), open_edges.end());
+    if (!open_known[index]) open_of[index] = open_vertices(p.terminal), open_known[index] = 1;
+    seam_vertices.insert(seam_vertices.end(), open_of[index].begin(), open_of[index].end());
     append_mesh(result.mesh, piece);
     if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
     triangles += piece.triangles.size();
     for (const ChildSlot& c : p.children) open.push_back({c, world.after(c.placement), depth + 1});
   };
-  place(grammar.productions.size(), RigidTransform{}, 0);
+  place(grammar.productions.size(), RigidTransform{}, 0, grammar.axiom.terminal);
 
   while (!open.empty()) {
     const OpenSlot slot = open.front();
     open.pop_front();
-    const std::size_t original = slot.slot.original_production;
-    std::size_t chosen = original;
     const bool too_deep = slot.depth > options.max_depth;
     const bool too_big = triangles > options.max_triangles;
     result.depth_limited = result.depth_limited || too_deep;
     result.triangle_limited = result.triangle_limited || too_big;
     const std::vector<std::size_t>& candidates = by_lhs[slot.slot.nonterminal];
+    std::optional<std::pair<std::size_t, TriangleMesh>> accepted;  // production and its moved terminal
     if (!options.exemplar_only && !too_deep && !too_big && !candidates.empty()) {
-      bool placed = false;
-      for (int attempt = 0; attempt < options.retries && !placed; ++attempt) {
+      for (int attempt = 0; attempt < options.retries && !accepted; ++attempt) {
         const std::size_t pick = candidates[static_cast<std::size_t>(random.uniform() * static_cast<double>(candidates.size()))];
         const ShapeProduction& p = grammar.productions[pick];
-        if (collisions.collides(transformed(p.terminal, slot.world), seams_of(grammar, p, slot.world))) {
+        TriangleMesh piece = transformed(p.terminal, slot.world);
+        if (collisions.collides(piece, seams_of(grammar, p, slot.world))) {
           ++result.collisions_retried;
           continue;
         }
-        chosen = pick;
-        placed = true;
+        accepted.emplace(pick, std::move(piece));
       }
-      if (!placed) ++result.fallbacks;
+      if (!accepted) ++result.fallbacks;
     }
-    result.productions.push_back(chosen);
-    place(chosen, slot.world, slot.depth);
+    if (!accepted) {
+      const std::size_t original = slot.slot.original_production;
+      accepted.emplace(original, transformed(grammar.productions[original].terminal, slot.world));
+    }
+    result.productions.push_back(accepted->first);
+    place(accepted->first, slot.world, slot.depth, accepted->second);
   }
   if (options.weld_seams) resolve_t_junctions(result.mesh, 1e-6 * eps, &seam_vertices);
   return result;
