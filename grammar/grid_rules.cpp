@@ -44,10 +44,34 @@ class Blocked {
   std::vector<std::pair<double, double>> intervals_;
 };
 
+// Cells by their position along a direction, to count the cells of a slab and how many of them
+// lie outside the symmetric region.
+class SlabCells {
+ public:
+  void add(double s, bool symmetric) { cells_.emplace_back(s, symmetric ? 0 : 1); }
+  void finish() {
+    std::sort(cells_.begin(), cells_.end());
+    asymmetric_before_.assign(cells_.size() + 1, 0);
+    for (std::size_t i = 0; i < cells_.size(); ++i) asymmetric_before_[i + 1] = asymmetric_before_[i] + cells_[i].second;
+  }
+  /// (asymmetric cells, all cells) with position strictly between lo and hi.
+  std::pair<std::size_t, std::size_t> count(double lo, double hi) const {
+    const auto begin = std::upper_bound(cells_.begin(), cells_.end(), std::make_pair(lo, 2));
+    const auto end = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(hi, 0));
+    if (end <= begin) return {0, 0};
+    const auto b = static_cast<std::size_t>(begin - cells_.begin()), e = static_cast<std::size_t>(end - cells_.begin());
+    return {asymmetric_before_[e] - asymmetric_before_[b], e - b};
+  }
+
+ private:
+  std::vector<std::pair<double, int>> cells_;
+  std::vector<std::size_t> asymmetric_before_;
+};
+
 // The best chain of cut planes for one translation: the longest run of planes, each crossing
 // only r-symmetric cells (and the last only images of them), whose slabs are symmetric.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
-                                            std::size_t symmetry_index, int min_repeats) {
+                                            std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry) {
   const VoxelSurface& surface = prepared.surface;
   const Vec3 t = symmetry.transform.translation;
   const double pitch = t.norm();
@@ -63,16 +87,17 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     const std::int64_t image = matcher.image_cell(c, symmetry.transform);
     if (image >= 0) in_image[static_cast<std::size_t>(image)] = 1;
   }
-  Blocked forward, backward, asymmetric;
+  Blocked forward, backward;
+  SlabCells slab_cells;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
     const double s = d.dot(surface.centre(c));
     if (!in_r[c]) forward.add(s - half, s + half);
     if (!in_image[c]) backward.add(s - half, s + half);
-    if (!in_xi[c]) asymmetric.add(s - half, s + half);
+    slab_cells.add(s, in_xi[c] != 0);
   }
   forward.finish();
   backward.finish();
-  asymmetric.finish();
+  slab_cells.finish();
 
   // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
   // plus every vertex coordinate (cuts through existing seams need no new vertices).
@@ -101,15 +126,10 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
       // The plane after the last unit must lie in the image of the r-symmetric area.
       while (count > 0 && backward.contains(first + count * pitch)) --count;
-      // Every slab but the last maps onto the next: no asymmetric cell strictly inside them.
+      // Every slab but the last maps onto the next: (almost) no asymmetric cell strictly inside.
       for (int k = 0; k + 1 < count; ++k) {
-        bool clean = true;
-        for (double s = first + k * pitch + half; s < first + (k + 1) * pitch - half; s += half)
-          if (asymmetric.contains(s)) {
-            clean = false;
-            break;
-          }
-        if (!clean) {
+        const auto [asymmetric_cells, cells] = slab_cells.count(first + k * pitch + half, first + (k + 1) * pitch - half);
+        if (static_cast<double>(asymmetric_cells) > max_slab_asymmetry * static_cast<double>(cells)) {
           count = k + 1;
           break;
         }
@@ -166,7 +186,8 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     for (std::size_t m = 0; m < family.members.size(); ++m) {
       if (family.powers[m] != 1) continue;
       const auto direction =
-          grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats);
+          grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
+                         options.max_slab_asymmetry);
       if (direction) directions.push_back(*direction);
     }
   }

@@ -6,8 +6,8 @@
 // A direction d with generator translation t (pitch p = |t|) has cut planes d . x = cut + j p,
 // j = 0 .. count. Each plane crosses only r-symmetric area, so every seam of a resized model
 // looks locally like a seam of the exemplar (r-similarity), and the `count` slabs between the
-// planes are exact copies of each other (they are symmetric under t), so count copies of the
-// first slab reproduce the exemplar.
+// planes are copies of each other (symmetric under t up to a little damage, see
+// GridOptions::max_slab_asymmetry), so count copies of the first slab reproduce the exemplar.
 
 #include "geometry/mesh.h"
 #include "geometry/prepared_model.h"
@@ -39,6 +39,10 @@ struct GridRule {
 struct GridOptions {
   int min_repeats = 2;  ///< a direction needs at least this many units to form a grid
   int max_count = 1000; ///< largest count offered to resize
+  /// A slab counts as a copy of the next when at most this fraction of its surface cells lies
+  /// outside the symmetric region: absorbs pipeline damage (back-to-back duplicate faces, fins,
+  /// slivers) while a different part (a door where the next slab has a window) stays larger.
+  double max_slab_asymmetry = 0.03;
 };
 
 /// Finds translational grids from the detected symmetry families. Independent directions are

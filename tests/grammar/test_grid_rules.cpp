@@ -66,6 +66,21 @@ TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the g
   CHECK(area < a.prepared.model.mesh.area());
 }
 
+TEST_CASE("messy facade: the column direction keeps the clean facade's pitch and count", "[grammar][grid]") {
+  // Back-to-back duplicate window and door faces make about 2 % of a column's cells
+  // asymmetric; the slab test absorbs that (GridOptions::max_slab_asymmetry). The rows are
+  // still short: the damage lies where the clean facade's row planes go (see the issue notes).
+  const Analysis a = analyze_asset("messy_facade", {{"columns", 3}, {"rows", 4}});
+  REQUIRE(a.grids.size() == 1);
+  const dg::GridDirection* columns = direction_along(a.grids[0], Vec3(3.0, 0, 0));
+  REQUIRE(columns != nullptr);
+  CHECK(columns->count == 3);
+  dg::GridOptions strict;
+  strict.max_slab_asymmetry = 0.0;
+  const std::vector<dg::GridRule> strict_grids = dg::find_grids(a.prepared, a.symmetries, strict);
+  CHECK((strict_grids.empty() || direction_along(strict_grids[0], Vec3(3.0, 0, 0)) == nullptr));
+}
+
 TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][grid]") {
   const Analysis a = analyze_asset("gear", {{"teeth", 12}});
   CHECK(a.grids.empty());
