@@ -1,6 +1,7 @@
 #include "geometry/voxel_surface.h"
 
 #include "geometry/box_overlap.h"
+#include "geometry/cloud_cell_geometry.h"
 #include "geometry/clip_polygon.h"
 #include "geometry/errors.h"
 
@@ -370,8 +371,12 @@ VoxelSurface build_voxel_surface(const PointCloud& cloud, const VoxelSurfaceOpti
   const double area_per_point =
       eps * eps * static_cast<double>(builder.keys().size()) / static_cast<double>(cloud.positions.size());
   builder.set_areas([&](std::uint32_t cell) { return area_per_point * static_cast<double>(builder.surface().points(cell).size()); });
-  report_progress(progress, "neighbourhoods", 0.7);
+  report_progress(progress, "neighbourhoods", 0.5);
   builder.set_neighbours();
+  report_progress(progress, "cell planes", 0.7);
+  const std::vector<CloudCell> fitted = fit_cloud_cells(cloud, builder.surface());
+  builder.set_planes([&](std::uint32_t cell, std::vector<CellPlane>& out) { out = fitted[cell].planes; });
+  builder.set_lines([&](std::uint32_t cell, std::vector<CellLine>& out) { out = fitted[cell].lines; });
   report_progress(progress, "voxel surface", 1.0);
   return std::move(builder.surface());
 }

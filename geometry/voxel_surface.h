@@ -133,7 +133,8 @@ class VoxelSurface {
 VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<FeatureEdge>& features,
                                  const VoxelSurfaceOptions& options = {}, const ProgressCallback& progress = {});
 
-/// Builds the voxel surface of a point cloud: each point lies in the voxel floor(p / eps).
+/// Builds the voxel surface of a point cloud: each point lies in the voxel floor(p / eps); cell
+/// planes (unoriented normals) and crease lines are fitted to the points (fit_cloud_cells).
 VoxelSurface build_voxel_surface(const PointCloud& cloud, const VoxelSurfaceOptions& options = {},
                                  const ProgressCallback& progress = {});
 

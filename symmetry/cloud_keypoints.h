@@ -1,6 +1,6 @@
 #pragma once
-// Keypoints of point clouds, which have no feature lines: places where the sampled surface
-// bends (creases and corners), with a frame from the local principal axes of the points.
+// Keypoints of point clouds, which have no feature lines: corners where three fitted cell
+// planes meet, one keypoint per crease that starts there, framed like a feature-line end.
 
 #include "geometry/mesh.h"
 #include "geometry/voxel_surface.h"
@@ -11,20 +11,18 @@
 namespace dg {
 
 struct CloudKeypointOptions {
-  /// Surface variation lambda0 / (lambda0 + lambda1 + lambda2) of the points around a cell
-  /// above which the surface bends there (a plane gives 0, a right-angled crease about 0.1).
-  double min_variation = 0.03;
-  double max_flat_variation = 0.01;  ///< cells below this variation are flat (their normal frames a bend)
-  std::size_t min_points = 8;  ///< points a neighbourhood needs to be analysed
+  double min_corner_determinant = 0.3;  ///< |n_a . (n_b x n_c)| three planes need to make a corner
+  double inlier_tolerance_eps = 0.25;   ///< a point lies on a plane within this many eps
+  std::size_t min_side_points = 2;      ///< points each plane needs along a crease to show it there
 };
 
-/// Keypoints at cells whose surface variation (points of the cell and its 26-neighbours) is a
-/// local maximum over two rings of cells and above the threshold: corners where creases meet.
-/// Position: the neighbourhood's centroid. Frame: from the normals of the flat cells within two
-/// rings (turned away from the centroid of that wider neighbourhood, clustered within 15
-/// degrees): normal = the largest cluster A, tangent = the next cluster B at least 30 degrees
-/// away, made orthogonal to A; a second keypoint swaps A and B. The angle between A and B is
-/// the descriptor's dihedral, so only similar bends are paired. Deterministic, in cell order.
+/// Keypoints at the corners of a point cloud's voxel surface (built with fitted planes, see
+/// fit_cloud_cells): for a cell holding three planes whose intersection point lies in its voxel,
+/// each pair of the planes gives a crease through the corner. A crease that runs out of the
+/// corner on one side only (both planes have points along it there, within two voxels) gives a
+/// keypoint at the corner: tangent along the crease away from the corner, normal pointing away
+/// from the wedge between the two half-planes, binormal = tangent x normal, and the wedge's
+/// opening angle as the descriptor's dihedral. Deterministic, in cell order.
 std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurface& surface,
                                       const CloudKeypointOptions& options = {});
 

@@ -7,10 +7,10 @@
 namespace dg {
 
 CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options)
-    : surface_(surface), cloud_(cloud),
-      cos_tolerance_(std::cos(options.angle_tolerance_degrees * std::numbers::pi / 180.0)),
-      offset_tolerance_(options.offset_tolerance_eps * surface.eps()),
-      point_tolerance_(options.point_tolerance_eps * surface.eps()), point_fraction_(options.point_match_fraction) {}
+    : surface_(surface), unoriented_(cloud != nullptr),
+      cos_tolerance_(std::cos((cloud ? options.cloud_angle_tolerance_degrees : options.angle_tolerance_degrees) *
+                              std::numbers::pi / 180.0)),
+      offset_tolerance_((cloud ? options.cloud_offset_tolerance_eps : options.offset_tolerance_eps) * surface.eps()) {}
 
 std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p) {
   const VoxelCoord v = surface.voxel_of(p);
@@ -84,9 +84,12 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
     const Vec3 foot = t.apply(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
     const Vec3 normal = t.apply_direction(plane.normal);
     const bool found = image.any([&](std::uint32_t other) {
-      for (const CellPlane& candidate : surface_.planes(other))
-        if (candidate.normal.dot(normal) > cos_tolerance_ && std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
+      for (const CellPlane& candidate : surface_.planes(other)) {
+        const double cos_angle = candidate.normal.dot(normal);
+        if ((unoriented_ ? std::abs(cos_angle) : cos_angle) > cos_tolerance_ &&
+            std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
           return true;
+      }
       return false;
     });
     if (!found) return false;
@@ -103,21 +106,6 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
       return false;
     });
     if (!found) return false;
-  }
-  if (cloud_) {
-    const auto points = surface_.points(cell);
-    std::size_t matched = 0;
-    const double tolerance2 = point_tolerance_ * point_tolerance_;
-    for (std::uint32_t p : points) {
-      const Vec3 mapped = t.apply(cloud_->positions[p]);
-      const bool found = image.any([&](std::uint32_t other) {
-        for (std::uint32_t q : surface_.points(other))
-          if ((cloud_->positions[q] - mapped).squaredNorm() <= tolerance2) return true;
-        return false;
-      });
-      matched += found ? 1 : 0;
-    }
-    if (static_cast<double>(matched) < point_fraction_ * static_cast<double>(points.size())) return false;
   }
   return true;
 }

@@ -15,8 +15,9 @@ namespace dg {
 struct RegionOptions {
   double angle_tolerance_degrees = 1.0;  ///< mapped planes/lines must agree in direction within this
   double offset_tolerance_eps = 0.1;     ///< ... and in position within this many eps
-  double point_tolerance_eps = 0.5;      ///< point clouds: a mapped point needs a point this close
-  double point_match_fraction = 0.7;     ///< point clouds: share of a cell's points that must match
+  /// Point clouds compare fitted cell planes and creases (unoriented), with these tolerances.
+  double cloud_angle_tolerance_degrees = 3.0;
+  double cloud_offset_tolerance_eps = 0.25;
 };
 
 /// Cell of the voxel holding point p (model units), or the occupied voxel of the 3x3x3 block
@@ -26,11 +27,12 @@ std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p);
 /// Decides whether single cells are symmetric under a motion by comparing exact geometry.
 class CellMatcher {
  public:
-  /// `cloud` is the point cloud the surface was built from, or null for meshes.
+  /// `cloud` is the point cloud the surface was built from, or null for meshes (it selects the
+  /// cloud tolerances and plane normals compared up to sign).
   CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options = {});
 
-  /// True when every plane and line (or most points) of `cell`, mapped by `t`, lies on geometry
-  /// near the image of the cell centre.
+  /// True when every plane and line of `cell`, mapped by `t`, lies on geometry near the image
+  /// of the cell centre.
   bool maps_onto_surface(std::uint32_t cell, const RigidTransform& t) const;
 
   /// Cell of the voxel holding t(centre(cell)), or the nearest occupied voxel around it; -1 if none.
@@ -42,8 +44,8 @@ class CellMatcher {
 
  private:
   const VoxelSurface& surface_;
-  const PointCloud* cloud_;
-  double cos_tolerance_, offset_tolerance_, point_tolerance_, point_fraction_;
+  bool unoriented_;
+  double cos_tolerance_, offset_tolerance_;
 };
 
 struct SymmetricRegion {
