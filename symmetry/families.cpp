@@ -27,7 +27,7 @@ double magnitude(const RigidTransform& t, const Vec3& centre, double eps) {
 }  // namespace
 
 std::vector<SymmetryFamily> group_families(const std::vector<RigidTransform>& motions, const std::vector<std::string>& kinds,
-                                           const Vec3& centre, double eps) {
+                                           const std::vector<char>& repeats, const Vec3& centre, double eps) {
   std::vector<std::size_t> order(motions.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -49,17 +49,20 @@ std::vector<SymmetryFamily> group_families(const std::vector<RigidTransform>& mo
       family.members.push_back(m);
       family.powers.push_back(k);
     }
-    std::vector<int> powers = family.powers;
+    std::vector<int> powers;
+    for (std::size_t m = 0; m < family.members.size(); ++m)
+      if (repeats[family.members[m]]) powers.push_back(family.powers[m]);
     if (family.kind == "rotation") {
       const double steps = 2.0 * std::numbers::pi / family.generator.angle();
       if (std::abs(steps - std::round(steps)) < 0.01 * steps) {
         family.order = static_cast<int>(std::lround(steps));
-        for (int k : family.powers)
-          if (family.order - k >= 1) powers.push_back(family.order - k);
+        for (std::size_t k = 0, found = powers.size(); k < found; ++k)
+          if (family.order - powers[k] >= 1) powers.push_back(family.order - powers[k]);
       }
     }
     std::sort(powers.begin(), powers.end());
-    family.count = static_cast<std::size_t>(std::unique(powers.begin(), powers.end()) - powers.begin());
+    powers.erase(std::unique(powers.begin(), powers.end()), powers.end());
+    while (family.count < powers.size() && powers[family.count] == static_cast<int>(family.count) + 1) ++family.count;
     families.push_back(std::move(family));
   }
   // Report families in the order of their first member in the input.

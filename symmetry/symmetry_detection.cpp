@@ -1,6 +1,8 @@
 #include "symmetry/symmetry_detection.h"
 
+#include "symmetry/cloud_icp.h"
 #include "symmetry/cloud_keypoints.h"
+#include "symmetry/pinned_area.h"
 
 #include <tbb/parallel_for.h>
 
@@ -68,6 +70,25 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
     return result;
   }
   if (candidates.size() > options.max_verified) candidates.resize(options.max_verified);
+  // Point-to-plane ICP on the cloud's points; the refined motion in canonical form, its keypoint
+  // matches swapped when that form is the inverse.
+  auto refine_cloud_candidate = [&](Candidate& c) {
+    const RigidTransform refined = refine_on_points(prepared.model.cloud, surface, c.transform);
+    c.transform = canonical_motion(refined, 0.5 * eps);
+    if (c.transform.translation != refined.translation)
+      for (auto& [from, to] : c.matches) std::swap(from, to);
+  };
+  if (prepared.model.is_point_cloud()) {
+    // A few corner keypoints leave a pitch uncertain by a fraction of a voxel: refit on all points.
+    tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) { refine_cloud_candidate(candidates[i]); });
+    std::vector<Candidate> distinct;
+    for (Candidate& c : candidates) {
+      const bool known = std::any_of(distinct.begin(), distinct.end(),
+                                     [&](const Candidate& d) { return same_motion(d.transform, c.transform, centre, 0.5 * eps); });
+      if (!known) distinct.push_back(std::move(c));
+    }
+    candidates = std::move(distinct);
+  }
 
   start = std::chrono::steady_clock::now();
   report_progress(progress, "symmetric regions", 0.3);
@@ -105,6 +126,7 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
     symmetry.r_symmetric_fraction = fraction;
     symmetry.symmetric_area = region.symmetric_area * area_scale;
     symmetry.r_symmetric_area = region.r_symmetric_area * area_scale;
+    symmetry.pinned_fraction = pinned_area(matcher, surface, candidate.transform, region.r_symmetric_cells, 0.5 * surface.r()) / total;
     symmetry.region = std::move(region);
     return symmetry;
   };
@@ -132,7 +154,8 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
       bool known = false;
       for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical, centre, eps);
       if (known) continue;
-      const Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
+      Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
+      if (prepared.model.is_point_cloud()) refine_cloud_candidate(probe);
       if (probe.matches.size() < candidate_options.min_support) break;
       bool refined_known = false;  // ICP may settle on a motion that is already listed
       for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform, centre, eps);
@@ -151,11 +174,13 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   start = std::chrono::steady_clock::now();
   std::vector<RigidTransform> motions;
   std::vector<std::string> kinds;
+  std::vector<char> repeats;
   for (const DetectedSymmetry& s : result.symmetries) {
     motions.push_back(s.transform);
     kinds.push_back(s.kind);
+    repeats.push_back(s.pinned_fraction >= options.min_r_symmetric_fraction ? 1 : 0);
   }
-  result.families = group_families(motions, kinds, centre, eps);
+  result.families = group_families(motions, kinds, repeats, centre, eps);
   for (std::size_t f = 0; f < result.families.size(); ++f)
     for (std::size_t m = 0; m < result.families[f].members.size(); ++m) {
       result.symmetries[result.families[f].members[m]].family = f;

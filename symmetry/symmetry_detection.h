@@ -32,6 +32,9 @@ struct DetectedSymmetry {
   double r_symmetric_fraction = 0.0;
   double symmetric_area = 0.0;        ///< model units^2 (scaled to the mesh's true area)
   double r_symmetric_area = 0.0;
+  /// Share of the surface in xi_r(T) that T pins in place (see pinned_area); below
+  /// min_r_symmetric_fraction the motion only slides parts along themselves and is no repeat.
+  double pinned_fraction = 0.0;
   std::size_t family = 0;  ///< index into SymmetryResult::families
   int power = 1;           ///< this motion = family generator ^ power (up to inversion)
 };

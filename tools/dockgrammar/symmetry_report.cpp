@@ -81,6 +81,7 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
                           {"r_symmetric_area", s.r_symmetric_area},
                           {"symmetric_fraction", s.symmetric_fraction},
                           {"r_symmetric_fraction", s.r_symmetric_fraction},
+                          {"pinned_fraction", s.pinned_fraction},
                           {"family",
                            {{"index", s.family},
                             {"generator", matrix_json(family.generator)},
