@@ -1,8 +1,10 @@
 #include "grammar/context_free.h"
 
-#include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
+#include "geometry/zone_cut.h"
 #include "grammar/cell_sets.h"
+#include "grammar/seam_curve.h"
+#include "grammar/seam_cut.h"
 #include "grammar/random.h"
 #include "symmetry/symmetric_region.h"
 
@@ -60,7 +62,8 @@ struct Node {
   Cells site, docker;
   std::size_t klass = kNone;
   RigidTransform frame;  // non-terminal frame -> this location
-  Plane seam;            // in model coordinates, normal towards the docker
+  RigidTransform frame_inverse;
+  std::vector<std::uint32_t> piece;  // triangles of the cut exemplar in the docker, ascending
   bool kept = true;
   std::size_t parent = kNone;
   std::vector<std::size_t> children;
@@ -177,7 +180,11 @@ class Builder {
   ContextFreeGrammar build(const DockingSiteResult& sites, ContextFreeStats& stats) {
     collect_nodes(sites, stats);
     assign_classes();
-    fit_seams(stats);
+    choose_seams();
+    cut_model();
+    cut_pieces();
+    check_fit();
+    count_sites(stats);
     build_tree();
     ContextFreeGrammar grammar;
     make_productions(grammar);
@@ -241,44 +248,169 @@ class Builder {
         }
       }
     }
-    for (Node& n : nodes_) n.kept = n.klass != kNone;
+    for (Node& n : nodes_) {
+      n.kept = n.klass != kNone;
+      n.frame_inverse = n.frame.inverse();
+    }
   }
 
-  void fit_seams(ContextFreeStats& stats) {
+  // One seam per non-terminal, from its first location: a plane when the band lies flat and the
+  // docker is on one side of it at every location, else the voxel faces inside the band.
+  void choose_seams() {
     const double flatness = 2.0 * surface_.eps();
-    class_seam_.assign(class_nodes_.size(), std::nullopt);
+    class_seam_.assign(class_nodes_.size(), SeamSurface{});
+    class_docker_side_.assign(class_nodes_.size(), {});
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       const Node& root = nodes_[class_nodes_[k].front()];
       std::optional<Plane> plane = fit_seam(surface_, root, flatness);
       if (plane && !orient_towards_docker(surface_, root, mask_of(root.site, surface_.cell_count()), *plane)) plane.reset();
-      if (!plane) {
-        for (std::size_t i : class_nodes_[k]) nodes_[i].kept = false;
-        continue;
-      }
-      class_seam_[k] = plane;
       for (std::size_t i : class_nodes_[k]) {
-        Node& n = nodes_[i];
-        n.seam = plane->moved(n.frame);
+        if (!plane) break;
+        const Node& n = nodes_[i];
+        Plane placed = plane->moved(n.frame);
         bool flat = true;
-        for (std::uint32_t c : n.site) flat = flat && std::abs(n.seam.distance(surface_.centre(c))) <= 1.5 * flatness;
-        Plane check = n.seam;
-        n.kept = flat && orient_towards_docker(surface_, n, mask_of(n.site, surface_.cell_count()), check) &&
-                 check.normal.dot(n.seam.normal) > 0;
+        for (std::uint32_t c : n.site) flat = flat && std::abs(placed.distance(surface_.centre(c))) <= 1.5 * flatness;
+        const Vec3 normal = placed.normal;
+        if (!flat || !orient_towards_docker(surface_, n, mask_of(n.site, surface_.cell_count()), placed) ||
+            placed.normal.dot(normal) < 0)
+          plane.reset();
+      }
+      SeamSurface& seam = class_seam_[k];
+      if (plane) {
+        seam.kind = SeamSurface::Kind::plane;
+        seam.normal = plane->normal;
+        seam.offset = plane->offset;
+      } else {
+        seam = voxel_seam(surface_, root.site, root.docker, class_docker_side_[k]);
+        if (seam.faces.empty())
+          for (std::size_t i : class_nodes_[k]) nodes_[i].kept = false;
       }
     }
-    // A non-terminal needs at least two locations to offer an alternative.
-    for (auto& members : class_nodes_) {
+  }
+
+  // Original triangles touching the listed cells, one flag per triangle of the exemplar.
+  std::vector<char> triangles_touching(const Cells& cells) const {
+    std::vector<char> touching(mesh_.triangles.size(), 0);
+    for (std::uint32_t c : cells)
+      for (std::uint32_t t : surface_.triangles(c)) touching[t] = 1;
+    return touching;
+  }
+
+  // The exemplar cut along the seams of all kept locations (each in its own frame), once: every
+  // piece of every production is a set of its triangles.
+  void cut_model() {
+    cut_ = mesh_;
+    origin_.resize(mesh_.triangles.size());
+    std::iota(origin_.begin(), origin_.end(), 0u);
+    const double tolerance = 1e-5 * surface_.eps();  // no slivers thinner than this
+    for (const Node& n : nodes_) {
+      if (!n.kept) continue;
+      const std::vector<char> touching = triangles_touching(n.site);
+      std::vector<char> zone(cut_.triangles.size(), 0);
+      for (std::size_t t = 0; t < cut_.triangles.size(); ++t) zone[t] = touching[origin_[t]] && near_band(n, t);
+      ZoneCut cut = cut_zone(cut_, zone, seam_planes(class_seam_[n.klass], n.frame), tolerance, seam_face_filter(n));
+      for (std::uint32_t& o : cut.origin) o = origin_[o];
+      cut_ = std::move(cut.mesh);
+      origin_ = std::move(cut.origin);
+    }
+  }
+
+  // For voxel seams: cut a piece along a voxel plane only where a seam face on that plane meets
+  // its box (in the seam's frame).
+  PieceFilter seam_face_filter(const Node& node) const {
+    const SeamSurface& seam = class_seam_[node.klass];
+    if (seam.kind != SeamSurface::Kind::voxel_faces) return {};
+    return [&seam, frame = node.frame, back = node.frame_inverse](const std::array<Vec3, 3>& corners, std::size_t axis,
+                                                                  double offset) {
+      const std::array<Vec3, 3> own{back.apply(corners[0]), back.apply(corners[1]), back.apply(corners[2])};
+      const double base = frame.rotation.col(static_cast<Eigen::Index>(axis)).dot(frame.translation);
+      const auto plane = static_cast<std::int32_t>(std::lround((offset - base) / seam.eps));
+      return crosses_face(seam, own, static_cast<int>(axis), plane);
+    };
+  }
+
+  // Whether the box around triangle t of the cut model holds a band cell of `node` (true for
+  // triangles spanning many voxels).
+  bool near_band(const Node& node, std::size_t t) const {
+    BoundingBox box;
+    for (const Vec3& p : cut_.corners(t)) box.add(p);
+    const VoxelCoord lo = surface_.voxel_of(box.min), hi = surface_.voxel_of(box.max);
+    if (static_cast<std::int64_t>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64) return true;
+    for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
+      for (std::int32_t j = lo[1]; j <= hi[1]; ++j)
+        for (std::int32_t k = lo[2]; k <= hi[2]; ++k) {
+          const std::int64_t cell = surface_.find({i, j, k});
+          if (cell >= 0 && std::binary_search(node.site.begin(), node.site.end(), static_cast<std::uint32_t>(cell))) return true;
+        }
+    return false;
+  }
+
+  // Whether triangle t of the cut model lies in the docker of `node` (on the docker side of its
+  // seam where it crosses the band).
+  bool in_docker(const Node& node, std::size_t t) const {
+    const auto corners = cut_.corners(t);
+    const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
+    const std::int64_t found = nearest_cell(surface_, centroid);
+    if (found < 0) return false;
+    const auto cell = static_cast<std::uint32_t>(found);
+    if (std::binary_search(node.docker.begin(), node.docker.end(), cell)) return true;
+    if (!std::binary_search(node.site.begin(), node.site.end(), cell)) return false;
+    return on_docker_side(class_seam_[node.klass], surface_, class_docker_side_[node.klass], node.frame_inverse, centroid);
+  }
+
+  // The docker piece of every kept node: triangles of the cut model, ascending.
+  void cut_pieces() {
+    std::vector<std::vector<std::uint32_t>> pieces_of_original(mesh_.triangles.size());
+    for (std::uint32_t t = 0; t < cut_.triangles.size(); ++t) pieces_of_original[origin_[t]].push_back(t);
+    for (Node& n : nodes_) {
+      if (!n.kept) continue;
+      Cells cells = n.docker;
+      cells.insert(cells.end(), n.site.begin(), n.site.end());
+      const std::vector<char> touching = triangles_touching(cells);
+      for (std::size_t o = 0; o < touching.size(); ++o)
+        if (touching[o])
+          for (std::uint32_t t : pieces_of_original[o])
+            if (in_docker(n, t)) n.piece.push_back(t);
+      std::sort(n.piece.begin(), n.piece.end());
+    }
+  }
+
+  // A docker cut at one location must fit the hole of every other location: the seam curve of
+  // each location, moved into the non-terminal's frame, must be that of its first location.
+  void check_fit() {
+    const std::vector<std::int64_t> across = triangles_across(cut_);
+    std::vector<char> inside(cut_.triangles.size(), 0);
+    auto curve = [&](const Node& n) {
+      for (std::uint32_t t : n.piece) inside[t] = 1;
+      std::vector<Segment> segments = seam_segments(cut_, across, n.piece, inside);
+      for (std::uint32_t t : n.piece) inside[t] = 0;
+      const RigidTransform back = n.frame.inverse();
+      for (Segment& s : segments) s = {back.apply(s[0]), back.apply(s[1])};
+      return segments;
+    };
+    const double tolerance = 1e-6 * surface_.eps();
+    for (const auto& members : class_nodes_) {
+      const Node& root = nodes_[members.front()];
+      const std::vector<Segment> reference = root.kept ? curve(root) : std::vector<Segment>{};
+      for (std::size_t i : members) {
+        Node& n = nodes_[i];
+        n.kept = n.kept && !reference.empty() && !n.piece.empty() &&
+                 same_curve(curve(n), reference, tolerance, surface_.eps());
+      }
+      // A non-terminal needs at least two locations to offer an alternative.
       std::size_t kept = 0;
       for (std::size_t i : members) kept += nodes_[i].kept ? 1 : 0;
       if (kept < 2)
         for (std::size_t i : members) nodes_[i].kept = false;
     }
-    for (std::size_t r = 0; r < relations_.size(); ++r) {
-      const Relation& rel = relations_[r];
+  }
+
+  void count_sites(ContextFreeStats& stats) const {
+    for (const Relation& rel : relations_) {
       if (nodes_[rel.from].kept && nodes_[rel.to].kept)
         ++stats.sites_used;
-      else if (!class_seam_[nodes_[rel.from].klass])
-        ++stats.sites_not_planar;
+      else
+        ++stats.sites_without_fit;
     }
   }
 
@@ -321,45 +453,29 @@ class Builder {
     return conflict;
   }
 
-  // Whether triangle `t` of `mesh` (cut along the node's seam) belongs to the node's docker.
-  bool in_docker(const Node& node, const std::vector<char>& docker, const std::vector<char>& site, const TriangleMesh& mesh,
-                 std::size_t t) const {
-    const auto corners = mesh.corners(t);
-    const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-    const std::int64_t cell = nearest_cell(surface_, centroid);
-    if (cell < 0) return false;
-    if (docker[static_cast<std::size_t>(cell)]) return true;
-    return site[static_cast<std::size_t>(cell)] && node.seam.distance(centroid) > 0;
-  }
-
-  // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`,
-  // in model coordinates.
-  TriangleMesh remainder(std::size_t node, const std::vector<std::size_t>& children) const {
-    const std::size_t n = surface_.cell_count();
-    const double tolerance = 1e-6 * surface_.eps();
-    TriangleMesh cut = mesh_;
-    std::vector<std::size_t> involved = children;
-    if (node != kNone) involved.push_back(node);
-    for (std::size_t i : involved) cut = cut_along_planes(cut, nodes_[i].seam.normal, {nodes_[i].seam.offset}, tolerance);
-    std::vector<char> keep(cut.triangles.size(), node == kNone ? 1 : 0);
-    if (node != kNone) {
-      const std::vector<char> docker = mask_of(nodes_[node].docker, n), site = mask_of(nodes_[node].site, n);
-      for (std::size_t t = 0; t < cut.triangles.size(); ++t) keep[t] = in_docker(nodes_[node], docker, site, cut, t);
+  // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`, in
+  // model coordinates.
+  TriangleMesh remainder(std::size_t node, const std::vector<std::size_t>& children) {
+    std::vector<std::uint32_t> own;
+    if (node == kNone) {
+      own.resize(cut_.triangles.size());
+      std::iota(own.begin(), own.end(), 0u);
+    } else {
+      own = nodes_[node].piece;
     }
-    for (std::size_t c : children) {
-      const std::vector<char> docker = mask_of(nodes_[c].docker, n), site = mask_of(nodes_[c].site, n);
-      for (std::size_t t = 0; t < cut.triangles.size(); ++t)
-        if (keep[t] && in_docker(nodes_[c], docker, site, cut, t)) keep[t] = 0;
-    }
+    for (std::size_t c : children)
+      for (std::uint32_t t : nodes_[c].piece) taken_[t] = 1;
     std::vector<std::size_t> triangles;
-    for (std::size_t t = 0; t < keep.size(); ++t)
-      if (keep[t]) triangles.push_back(t);
-    return submesh(cut, triangles);
+    for (std::uint32_t t : own)
+      if (!taken_[t]) triangles.push_back(t);
+    for (std::size_t c : children)
+      for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
+    return submesh(cut_, triangles);
   }
 
   // The production of `node` (kNone: the axiom) with the given children; children must have
   // their own productions already (their dockers are smaller, so they are built first).
-  ShapeProduction production(std::size_t node, const std::vector<std::size_t>& children) const {
+  ShapeProduction production(std::size_t node, const std::vector<std::size_t>& children) {
     ShapeProduction p;
     const RigidTransform to_frame = node == kNone ? RigidTransform{} : nodes_[node].frame.inverse();
     p.lhs = node == kNone ? kNoProduction : class_index_[nodes_[node].klass];
@@ -370,7 +486,14 @@ class Builder {
     return p;
   }
 
+  double piece_area(const std::vector<std::uint32_t>& piece) const {
+    double area = 0.0;
+    for (std::uint32_t t : piece) area += 0.5 * cut_.area_vector(t).norm();
+    return area;
+  }
+
   void make_productions(ContextFreeGrammar& grammar) {
+    taken_.assign(cut_.triangles.size(), 0);
     // Non-terminals that survived, numbered densely.
     class_index_.assign(class_nodes_.size(), kNone);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
@@ -380,8 +503,7 @@ class Builder {
       class_index_[k] = grammar.nonterminals.size();
       ShapeNonterminal nt;
       nt.name = fmt::format("N{}", grammar.nonterminals.size() + 1);
-      nt.seam_normal = class_seam_[k]->normal;
-      nt.seam_offset = class_seam_[k]->offset;
+      nt.seam = class_seam_[k];
       nt.sites = kept;
       grammar.nonterminals.push_back(nt);
     }
@@ -402,7 +524,7 @@ class Builder {
     docker_area_.assign(nodes_.size(), 0.0);
     for (std::size_t i : order) {
       const std::vector<std::size_t> children = kept_only(nodes_[i].children);
-      docker_area_[i] = remainder(i, {}).area();
+      docker_area_[i] = piece_area(nodes_[i].piece);
       for (const auto& set : independent_sets(children, conflicts(children), options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
         if (!adds_up(p, set, docker_area_[i])) continue;
@@ -434,10 +556,14 @@ class Builder {
   std::vector<Node> nodes_;
   std::vector<Relation> relations_;
   std::vector<std::vector<std::size_t>> class_nodes_;
-  std::vector<std::optional<Plane>> class_seam_;
+  std::vector<SeamSurface> class_seam_;               // per class, in its frame
+  std::vector<std::vector<char>> class_docker_side_;  // per class with a voxel seam: cells on its docker side
+  TriangleMesh cut_;                                  // the exemplar cut along every kept seam
+  std::vector<std::uint32_t> origin_;                 // per triangle of cut_: its exemplar triangle
+  std::vector<char> taken_;                           // scratch flags per triangle of cut_
   std::vector<std::size_t> roots_;
   std::vector<std::size_t> class_index_;  // class -> non-terminal index
-  std::vector<double> docker_area_;  // per node, model units^2
+  std::vector<double> docker_area_;       // per node, model units^2
 };
 
 }  // namespace

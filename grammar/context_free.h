@@ -11,15 +11,18 @@
 //     node's non-terminal -> terminal remainder + child non-terminals,
 // stored in the non-terminal's frame; the whole model is the axiom.
 //
-// Geometry is cut out of the original triangles along one plane per non-terminal (its seam),
-// fitted through the band of its first node and mapped by each node's frame, so a docker cut
-// at one node fits exactly into the seam of any other node of the same non-terminal. Sites
-// whose band is not planar, or that slide along themselves (slippage), give no non-terminal.
+// Geometry is cut out of the original triangles along one seam per non-terminal, built from the
+// band of its first node and mapped by each node's frame: a plane when the band lies flat,
+// else the voxel faces between the band's cells next to the docker and the cells beyond them.
+// A docker cut at one node then fits exactly into the seam of any other node of the same
+// non-terminal; nodes where it does not (the seam curves differ) are dropped, and so are sites
+// that slide along themselves (slippage).
 
 #include "geometry/mesh.h"
 #include "geometry/prepared_model.h"
 #include "geometry/rigid_transform.h"
 #include "grammar/docking_sites.h"
+#include "grammar/seam_surface.h"
 
 #include <cstdint>
 #include <limits>
@@ -30,12 +33,11 @@ namespace dg {
 
 inline constexpr std::size_t kNoProduction = std::numeric_limits<std::size_t>::max();
 
-/// A non-terminal: a docking site shape. Its seam plane n . x = offset is in its own frame;
-/// the docker lies on the side the normal points to.
+/// A non-terminal: a docking site shape with the seam its dockers are cut along (in its own
+/// frame).
 struct ShapeNonterminal {
   std::string name;
-  Vec3 seam_normal = Vec3::UnitX();
-  double seam_offset = 0.0;
+  SeamSurface seam;
   std::size_t sites = 0;  ///< exemplar locations of this shape
 };
 
@@ -71,7 +73,7 @@ struct ContextFreeOptions {
 struct ContextFreeStats {
   std::size_t sites_used = 0;        ///< docking sites that entered the grammar
   std::size_t sites_slippable = 0;   ///< dropped: the band slides along itself
-  std::size_t sites_not_planar = 0;  ///< dropped: no single seam plane through the band
+  std::size_t sites_without_fit = 0;  ///< dropped: the docker cut at one location does not fit the other
   std::size_t nodes = 0;             ///< distinct site locations
 };
 

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -50,6 +51,41 @@ RigidTransform matrix_field(const nlohmann::json& object, const char* key, const
     for (int c = 0; c < 4; ++c) m(r, c) = rows[r][c];
   }
   return rigid_from_matrix(m);
+}
+
+nlohmann::json seam_json(const SeamSurface& seam) {
+  if (seam.kind == SeamSurface::Kind::plane)
+    return {{"kind", "plane"}, {"normal", {seam.normal.x(), seam.normal.y(), seam.normal.z()}}, {"offset", seam.offset}};
+  nlohmann::json faces = nlohmann::json::array();
+  for (const VoxelFace& f : seam.faces) faces.push_back({f.voxel[0], f.voxel[1], f.voxel[2], f.axis});
+  return {{"kind", "voxel_faces"}, {"eps", seam.eps}, {"faces", faces}};
+}
+
+// A seam object (version 3), or the plane fields of version 2.
+SeamSurface read_seam(const nlohmann::json& nonterminal, int version, const std::string& where) {
+  SeamSurface seam;
+  if (version < 3) {
+    seam.normal = vec3_field(nonterminal, "seam_normal", where);
+    seam.offset = field<double>(nonterminal, "seam_offset", where);
+    return seam;
+  }
+  const nlohmann::json object = field<nlohmann::json>(nonterminal, "seam", where);
+  const std::string kind = field<std::string>(object, "kind", where);
+  if (kind == "plane") {
+    seam.normal = vec3_field(object, "normal", where);
+    seam.offset = field<double>(object, "offset", where);
+    return seam;
+  }
+  if (kind != "voxel_faces") throw InputError(where + ": unknown seam kind \"" + kind + "\"");
+  seam.kind = SeamSurface::Kind::voxel_faces;
+  seam.eps = field<double>(object, "eps", where);
+  if (!(seam.eps > 0.0)) throw InputError(where + ": a seam's eps must be positive");
+  for (const auto& f : field<std::vector<std::vector<std::int32_t>>>(object, "faces", where)) {
+    if (f.size() != 4 || f[3] < 0 || f[3] > 2) throw InputError(where + ": a seam face needs i, j, k and an axis 0..2");
+    seam.faces.push_back({{f[0], f[1], f[2]}, f[3]});
+  }
+  std::sort(seam.faces.begin(), seam.faces.end());
+  return seam;
 }
 
 // One production: its terminal goes to a sidecar file (none when it has no triangles).
@@ -129,10 +165,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
   const ContextFreeGrammar& cf = grammar.context_free;
   nlohmann::json nonterminals = nlohmann::json::array(), productions = nlohmann::json::array(), axiom = nullptr;
   for (const ShapeNonterminal& n : cf.nonterminals)
-    nonterminals.push_back({{"name", n.name},
-                            {"seam_normal", {n.seam_normal.x(), n.seam_normal.y(), n.seam_normal.z()}},
-                            {"seam_offset", n.seam_offset},
-                            {"sites", n.sites}});
+    nonterminals.push_back({{"name", n.name}, {"seam", seam_json(n.seam)}, {"sites", n.sites}});
   if (!cf.empty()) {
     axiom = production_json(cf, cf.axiom, folder, "axiom.ply");
     for (std::size_t i = 0; i < cf.productions.size(); ++i)
@@ -182,13 +215,13 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
 }
 
 template <class Load>
-void read_context_free(const nlohmann::json& document, const std::string& where, const Load& load, ContextFreeGrammar& cf) {
+void read_context_free(const nlohmann::json& document, int version, const std::string& where, const Load& load,
+                       ContextFreeGrammar& cf) {
   std::map<std::string, std::size_t> names;
   for (const nlohmann::json& n : field<nlohmann::json>(document, "nonterminals", where)) {
     ShapeNonterminal nt;
     nt.name = field<std::string>(n, "name", where);
-    nt.seam_normal = vec3_field(n, "seam_normal", where);
-    nt.seam_offset = field<double>(n, "seam_offset", where);
+    nt.seam = read_seam(n, version, where);
     nt.sites = field<std::size_t>(n, "sites", where);
     names[nt.name] = cf.nonterminals.size();
     cf.nonterminals.push_back(nt);
@@ -259,7 +292,7 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     }
     grammar.grids.push_back(std::move(entry));
   }
-  if (version >= 2) read_context_free(document, where, load, grammar.context_free);
+  if (version >= 2) read_context_free(document, version, where, load, grammar.context_free);
   return grammar;
 }
 

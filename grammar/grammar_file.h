@@ -14,7 +14,7 @@
 
 namespace dg {
 
-inline constexpr int kGrammarFileVersion = 2;  ///< version 1 (grids only) is still read
+inline constexpr int kGrammarFileVersion = 3;  ///< versions 1 (grids only) and 2 (planar seams) are still read
 
 /// A grid rule with its pieces and where they are stored.
 struct GridWithPieces {

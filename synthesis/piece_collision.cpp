@@ -64,15 +64,10 @@ bool segment_hits_triangle(const Vec3& a, const Vec3& b, const Vec3& p, const Ve
 struct Query {
   const TriangleMesh* piece;
   const TriangleMesh* placed;
-  const std::vector<SeamPlane>* seams;
-  double tolerance;
+  const SeamContact* at_seam;
   std::atomic<bool> found{false};
 
-  bool near_seam(const Vec3& x) const {
-    for (const SeamPlane& s : *seams)
-      if (std::abs(s.normal.dot(x) - s.offset) <= tolerance) return true;
-    return false;
-  }
+  bool near_seam(const Vec3& x) const { return (*at_seam)(x); }
 
   // Any edge of one triangle crossing the other away from the seams.
   bool crossing(std::size_t a, std::size_t b) const {
@@ -102,14 +97,14 @@ bool boxes_overlap(const BoundingBox& a, const BoundingBox& b, double margin) {
 
 struct PieceCollisions::Impl {
   RTCDevice device = nullptr;
-  double tolerance = 0.0;
+  double margin = 0.0;
   std::vector<std::unique_ptr<Soup>> placed;
 };
 
-PieceCollisions::PieceCollisions(double seam_tolerance) : impl_(std::make_unique<Impl>()) {
+PieceCollisions::PieceCollisions(double margin) : impl_(std::make_unique<Impl>()) {
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) throw std::runtime_error("Embree: cannot create a device");
-  impl_->tolerance = seam_tolerance;
+  impl_->margin = margin;
 }
 
 PieceCollisions::~PieceCollisions() {
@@ -118,15 +113,15 @@ PieceCollisions::~PieceCollisions() {
   rtcReleaseDevice(impl_->device);
 }
 
-bool PieceCollisions::collides(const TriangleMesh& piece, const std::vector<SeamPlane>& seams) const {
+bool PieceCollisions::collides(const TriangleMesh& piece, const SeamContact& at_seam) const {
   if (piece.triangles.empty()) return false;
   const BoundingBox box = piece.bounds();
   RTCScene scene = nullptr;
   bool found = false;
   for (const auto& soup : impl_->placed) {
-    if (soup->mesh.triangles.empty() || !boxes_overlap(box, soup->box, impl_->tolerance)) continue;
+    if (soup->mesh.triangles.empty() || !boxes_overlap(box, soup->box, impl_->margin)) continue;
     if (!scene) scene = make_scene(impl_->device, piece);
-    Query query{&piece, &soup->mesh, &seams, impl_->tolerance};
+    Query query{&piece, &soup->mesh, &at_seam};
     rtcCollide(scene, soup->scene, on_collision, &query);
     if (query.found.load()) {
       found = true;

@@ -1,33 +1,34 @@
 #pragma once
 // Collision checks between the pieces a derivation places (paper 001 §3.2, §4.2): Embree's
 // BVH collision query finds triangle pairs whose boxes overlap, an exact edge/triangle test
-// decides. Pieces of a grammar meet only at their seams, so intersections within a tolerance
-// band around the seam planes of the new piece are contact, not collision.
+// decides. Pieces of a grammar meet only at their seams, so intersections the caller places at
+// a seam of the new piece (e.g. within a tolerance of its seam planes or voxel faces) are
+// contact, not collision.
 
 #include "geometry/mesh.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 namespace dg {
 
-/// A plane n . x = offset (n unit), model units.
-struct SeamPlane {
-  Vec3 normal = Vec3::UnitX();
-  double offset = 0.0;
-};
+/// Whether an intersection point (model units) is contact at a seam rather than a collision.
+/// Called concurrently: must only read shared state.
+using SeamContact = std::function<bool(const Vec3&)>;
 
 class PieceCollisions {
  public:
-  /// `seam_tolerance`: intersections closer than this to a seam plane are allowed (model units).
-  explicit PieceCollisions(double seam_tolerance);
+  /// `margin`: placed pieces whose bounds are farther than this from the new piece are skipped
+  /// (model units, at least the seam tolerance the contact test uses).
+  explicit PieceCollisions(double margin);
   ~PieceCollisions();
   PieceCollisions(const PieceCollisions&) = delete;
   PieceCollisions& operator=(const PieceCollisions&) = delete;
 
-  /// True when `piece` (model coordinates) crosses a piece added before anywhere farther than
-  /// the tolerance from all of `seams`. Coplanar overlaps are not detected.
-  bool collides(const TriangleMesh& piece, const std::vector<SeamPlane>& seams) const;
+  /// True when `piece` (model coordinates) crosses a piece added before at a point that
+  /// `at_seam` does not accept as contact. Coplanar overlaps are not detected.
+  bool collides(const TriangleMesh& piece, const SeamContact& at_seam) const;
 
   /// Adds a placed piece to the set later pieces are checked against.
   void add(const TriangleMesh& piece);

@@ -19,17 +19,15 @@ struct OpenSlot {
   int depth = 1;
 };
 
-SeamPlane seam_of(const ShapeNonterminal& nt, const RigidTransform& world) {
-  const Vec3 normal = world.apply_direction(nt.seam_normal);
-  return {normal, normal.dot(world.apply(nt.seam_offset * nt.seam_normal))};
-}
-
-// Seam planes of a production placed with `world`: its own seam and those of its slots.
-std::vector<SeamPlane> seams_of(const ContextFreeGrammar& g, const ShapeProduction& p, const RigidTransform& world) {
-  std::vector<SeamPlane> seams;
-  if (p.lhs != kNoProduction) seams.push_back(seam_of(g.nonterminals[p.lhs], world));
-  for (const ChildSlot& c : p.children) seams.push_back(seam_of(g.nonterminals[c.nonterminal], world.after(c.placement)));
-  return seams;
+// Contact test for a production placed with `world`: points within `tolerance` of its own seam
+// or of the seams of its slots (each in its non-terminal's frame).
+SeamContact contact_of(const ContextFreeGrammar& g, const ShapeProduction& p, const RigidTransform& world, double tolerance) {
+  std::vector<std::pair<const SeamSurface*, RigidTransform>> seams;  // seam, model -> seam frame
+  if (p.lhs != kNoProduction) seams.push_back({&g.nonterminals[p.lhs].seam, world.inverse()});
+  for (const ChildSlot& c : p.children) seams.push_back({&g.nonterminals[c.nonterminal].seam, world.after(c.placement).inverse()});
+  return [seams = std::move(seams), tolerance](const Vec3& x) {
+    return std::any_of(seams.begin(), seams.end(), [&](const auto& s) { return s.first->near(s.second.apply(x), tolerance); });
+  };
 }
 
 // Flags the vertices of a piece that lie on an edge used by only one of its triangles.
@@ -58,7 +56,8 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
 
   ShapeDerivation result;
   Random random(options.seed);
-  PieceCollisions collisions(options.seam_tolerance > 0 ? options.seam_tolerance : eps);
+  const double seam_tolerance = options.seam_tolerance > 0 ? options.seam_tolerance : eps;
+  PieceCollisions collisions(seam_tolerance);
   std::size_t triangles = 0;
   std::deque<OpenSlot> open;
   std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
@@ -91,7 +90,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
         const std::size_t pick = candidates[static_cast<std::size_t>(random.uniform() * static_cast<double>(candidates.size()))];
         const ShapeProduction& p = grammar.productions[pick];
         TriangleMesh piece = transformed(p.terminal, slot.world);
-        if (collisions.collides(piece, seams_of(grammar, p, slot.world))) {
+        if (collisions.collides(piece, contact_of(grammar, p, slot.world, seam_tolerance))) {
           ++result.collisions_retried;
           continue;
         }

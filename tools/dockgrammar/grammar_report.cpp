@@ -15,8 +15,8 @@ namespace dg::cli {
 namespace {
 
 constexpr const char* kMissing =
-    "grids of rotations and screw motions are not built; docking sites whose band is not planar, or that slide "
-    "along themselves, give no context-free production";
+    "grids of rotations and screw motions are not built; docking sites that slide along themselves, or whose docker "
+    "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
 
 std::string counts_text(const GridRule& grid) {
   std::string text;
@@ -95,8 +95,8 @@ std::string context_free_markdown(const AnalysisReport& report) {
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }));
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
-                            "paper), {} have no planar seam to cut along.\n\n",
-                            report.context_free.sites_slippable, report.context_free.sites_not_planar);
+                            "paper), {} have a docker that, cut at one location, does not fit the seam of the other.\n\n",
+                            report.context_free.sites_slippable, report.context_free.sites_without_fit);
   md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
@@ -131,8 +131,8 @@ std::string analysis_text(const AnalysisReport& report) {
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
                      ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
   if (cf.empty())
-    out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have no planar seam)\n",
-                       report.context_free.sites_slippable, report.context_free.sites_not_planar);
+    out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam)\n",
+                       report.context_free.sites_slippable, report.context_free.sites_without_fit);
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom (generate makes random variants)\n",
                        cf.nonterminals.size(), cf.productions.size());

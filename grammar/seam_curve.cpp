@@ -1,0 +1,90 @@
+#include "grammar/seam_curve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace dg {
+namespace {
+
+using CellKey = std::array<std::int64_t, 3>;
+
+struct CellHash {
+  std::size_t operator()(const CellKey& k) const {
+    return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
+  }
+};
+
+double distance_to_segment(const Vec3& p, const Segment& s) {
+  const Vec3 d = s[1] - s[0];
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - s[0]).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (s[0] + t * d - p).norm();
+}
+
+// Every sample of `a` lies near some segment of `b`.
+bool covered(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance, double cell) {
+  auto key = [&](const Vec3& p) {
+    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
+  };
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
+  for (std::uint32_t i = 0; i < b.size(); ++i) {
+    const CellKey lo = key(b[i][0].cwiseMin(b[i][1]) - Vec3::Constant(tolerance));
+    const CellKey hi = key(b[i][0].cwiseMax(b[i][1]) + Vec3::Constant(tolerance));
+    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid[{x, y, z}].push_back(i);
+  }
+  for (const Segment& s : a)
+    for (const Vec3& p : {s[0], s[1], Vec3(0.5 * (s[0] + s[1]))}) {
+      const auto found = grid.find(key(p));
+      if (found == grid.end()) return false;
+      bool near = false;
+      for (std::uint32_t i : found->second) near = near || distance_to_segment(p, b[i]) <= tolerance;
+      if (!near) return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::int64_t> triangles_across(const TriangleMesh& mesh) {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> uses;  // edge key, corner 3t+k
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto [lo, hi] = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
+      uses.push_back({(static_cast<std::uint64_t>(lo) << 32) | hi, 3 * t + k});
+    }
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::int64_t> across(3 * mesh.triangles.size(), -1);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    if (j - i == 2) {
+      across[uses[i].second] = static_cast<std::int64_t>(uses[i + 1].second / 3);
+      across[uses[i + 1].second] = static_cast<std::int64_t>(uses[i].second / 3);
+    }
+    i = j;
+  }
+  return across;
+}
+
+std::vector<Segment> seam_segments(const TriangleMesh& mesh, const std::vector<std::int64_t>& across,
+                                   const std::vector<std::uint32_t>& piece, const std::vector<char>& inside) {
+  std::vector<Segment> segments;
+  for (std::uint32_t t : piece)
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t other = across[3 * static_cast<std::size_t>(t) + k];
+      if (other < 0 || inside[static_cast<std::size_t>(other)]) continue;
+      segments.push_back({mesh.positions[mesh.triangles[t][k]], mesh.positions[mesh.triangles[t][(k + 1) % 3]]});
+    }
+  return segments;
+}
+
+bool same_curve(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance, double cell) {
+  return covered(a, b, tolerance, cell) && covered(b, a, tolerance, cell);
+}
+
+}  // namespace dg
