@@ -4,38 +4,118 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
 
 namespace dg {
 namespace {
 
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
 
-// Boundary edges (used by one triangle) with the triangle and the corner where the edge starts,
-// sorted by edge.
-// With `only`, just the edges whose two ends are flagged (their other uses are edges of the
-// same kind, so the counts stay right).
-std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> boundary_edges(const TriangleMesh& mesh, const std::vector<char>* only) {
-  std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> uses;
-  uses.reserve(only ? 0 : 3 * mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+// A use of an undirected edge: the edge, then the triangle and the corner where it starts.
+struct EdgeUse {
+  EdgeKey edge;
+  std::uint32_t triangle = 0;
+  int corner = 0;
+};
+
+// Boundary edges (used by one triangle) among the edges of `triangles`, sorted by edge.
+// With `only`, just the edges whose two ends are flagged; every triangle using such an edge
+// must then be listed (it has two flagged corners), so the counts stay right.
+std::vector<EdgeUse> boundary_edges(const TriangleMesh& mesh, const std::vector<std::uint32_t>& triangles,
+                                    const std::vector<char>* only) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (std::uint32_t t : triangles)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
       if (only && !((*only)[a] && (*only)[b])) continue;
-      uses.push_back({std::minmax(a, b), {t, k}});
+      uses.push_back({std::minmax(a, b), t, k});
     }
-  std::sort(uses.begin(), uses.end());
-  std::vector<std::pair<EdgeKey, std::pair<std::size_t, int>>> single;
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.edge, x.triangle, x.corner) < std::tie(y.edge, y.triangle, y.corner);
+  });
+  std::vector<EdgeUse> single;
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
-    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
     if (j - i == 1) single.push_back(uses[i]);
     i = j;
   }
   return single;
 }
 
+// Triangles with at least two flagged corners (all triangles without flags): the only ones
+// that can hold an edge between two flagged vertices.
+std::vector<std::uint32_t> seam_triangles(const TriangleMesh& mesh, const std::vector<char>* only) {
+  std::vector<std::uint32_t> triangles;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    if (!only || (*only)[tri[0]] + (*only)[tri[1]] + (*only)[tri[2]] >= 2) triangles.push_back(t);
+  }
+  return triangles;
+}
+
+using CellKey = std::array<std::int64_t, 3>;
+
+struct CellKeyHash {
+  std::size_t operator()(const CellKey& k) const {
+    return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
+  }
+};
+
+// The ends of boundary edges in a spatial hash with cells at least `cell` wide.
+class BoundaryVertexGrid {
+ public:
+  BoundaryVertexGrid(const TriangleMesh& mesh, const std::vector<EdgeUse>& edges, double cell) : cell_(cell) {
+    for (const EdgeUse& use : edges)
+      for (std::uint32_t v : {use.edge.first, use.edge.second}) vertices_.push_back(v);
+    std::sort(vertices_.begin(), vertices_.end());
+    vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+    for (std::uint32_t v : vertices_) buckets_[key(mesh.positions[v])].push_back(v);
+  }
+
+  CellKey key(const Vec3& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.z() / cell_))};
+  }
+
+  // Calls visit(v) for every boundary vertex v in the cells overlapping the box [lo, hi]
+  // (or for all of them when that box spans more cells than there are vertices).
+  template <class Visit>
+  void for_each_near(const Vec3& lo, const Vec3& hi, Visit&& visit) const {
+    const CellKey a = key(lo), b = key(hi);
+    const double cells = static_cast<double>(b[0] - a[0] + 1) * static_cast<double>(b[1] - a[1] + 1) *
+                         static_cast<double>(b[2] - a[2] + 1);
+    if (cells > static_cast<double>(vertices_.size())) {
+      for (std::uint32_t v : vertices_) visit(v);
+      return;
+    }
+    for (std::int64_t x = a[0]; x <= b[0]; ++x)
+      for (std::int64_t y = a[1]; y <= b[1]; ++y)
+        for (std::int64_t z = a[2]; z <= b[2]; ++z) {
+          const auto found = buckets_.find({x, y, z});
+          if (found == buckets_.end()) continue;
+          for (std::uint32_t v : found->second) visit(v);
+        }
+  }
+
+ private:
+  double cell_;
+  std::vector<std::uint32_t> vertices_;
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> buckets_;
+};
+
 }  // namespace
+
+std::vector<char> open_edge_vertices(const TriangleMesh& mesh) {
+  std::vector<std::uint32_t> all(mesh.triangles.size());
+  std::iota(all.begin(), all.end(), 0u);
+  std::vector<char> open(mesh.positions.size(), 0);
+  for (const EdgeUse& use : boundary_edges(mesh, all, nullptr)) open[use.edge.first] = open[use.edge.second] = 1;
+  return open;
+}
 
 std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<char>* seam_vertices) {
   std::vector<char> seam;
@@ -46,78 +126,61 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
       if ((*seam_vertices)[v]) seam[remap[v]] = 1;
   }
   const std::vector<char>* only = seam_vertices ? &seam : nullptr;
+  // Split triangles keep their index (the first part replaces them, the others are appended),
+  // so the list of triangles that can hold seam edges only grows.
+  std::vector<std::uint32_t> candidates = seam_triangles(mesh, only);
   std::size_t splits = 0;
   for (int pass = 0; pass < 4; ++pass) {
-    const auto edges = boundary_edges(mesh, only);
+    const std::vector<EdgeUse> edges = boundary_edges(mesh, candidates, only);
     if (edges.empty()) break;
-    // Boundary vertices in a spatial hash with cells about as long as a boundary edge.
+    // Cells about as long as a boundary edge.
     double edge_length = 0.0;
-    for (const auto& [edge, use] : edges) edge_length += (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
+    for (const EdgeUse& use : edges) edge_length += (mesh.positions[use.edge.first] - mesh.positions[use.edge.second]).norm();
     edge_length /= static_cast<double>(edges.size());
-    const double cell = std::max({tolerance * 16.0, edge_length, 1e-300});
-    auto key = [&](const Vec3& p) {
-      return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / cell)),
-                                         static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                                         static_cast<std::int64_t>(std::floor(p.z() / cell))};
-    };
-    std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> buckets;
-    std::vector<char> on_boundary(mesh.positions.size(), 0);
-    for (const auto& [edge, use] : edges) on_boundary[edge.first] = on_boundary[edge.second] = 1;
-    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v)
-      if (on_boundary[v]) buckets[key(mesh.positions[v])].push_back(v);
+    const BoundaryVertexGrid grid(mesh, edges, std::max({tolerance * 16.0, edge_length, 1e-300}));
 
-    std::vector<bool> replaced(mesh.triangles.size(), false);
+    std::vector<char> replaced(mesh.triangles.size(), 0);
+    std::vector<std::pair<std::uint32_t, Triangle>> first_parts;
     std::vector<Triangle> added;
-    for (const auto& [edge, use] : edges) {
-      const auto [t, k] = use;
+    std::vector<std::pair<double, std::uint32_t>> inner;
+    for (const EdgeUse& use : edges) {
+      const std::uint32_t t = use.triangle;
       if (replaced[t]) continue;  // one split per triangle and pass
       const Triangle tri = mesh.triangles[t];
-      const std::uint32_t a = tri[k], b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
+      const std::uint32_t a = tri[use.corner], b = tri[(use.corner + 1) % 3], c = tri[(use.corner + 2) % 3];
       const Vec3 pa = mesh.positions[a], pb = mesh.positions[b];
       const Vec3 ab = pb - pa;
       const double length2 = ab.squaredNorm();
       if (length2 <= 0.0) continue;
-      // Vertices on the open segment, ordered from a to b.
-      std::vector<std::pair<double, std::uint32_t>> inner;
-      const auto lo = key(pa.cwiseMin(pb) - Vec3::Constant(tolerance)), hi = key(pa.cwiseMax(pb) + Vec3::Constant(tolerance));
-      if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 512) {
-        // Long edge: scan all boundary vertices instead of many empty cells.
-        for (const auto& [cell_key, vertices] : buckets)
-          for (std::uint32_t v : vertices) {
-            const double s = (mesh.positions[v] - pa).dot(ab) / length2;
-            if (v != a && v != b && s > 0.0 && s < 1.0 && (pa + s * ab - mesh.positions[v]).norm() <= tolerance)
-              inner.emplace_back(s, v);
-          }
-      } else {
-        for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-          for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-            for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-              const auto found = buckets.find({x, y, z});
-              if (found == buckets.end()) continue;
-              for (std::uint32_t v : found->second) {
-                const double s = (mesh.positions[v] - pa).dot(ab) / length2;
-                if (v != a && v != b && s > 0.0 && s < 1.0 && (pa + s * ab - mesh.positions[v]).norm() <= tolerance)
-                  inner.emplace_back(s, v);
-              }
-            }
-      }
+      // Boundary vertices on the open segment, ordered from a to b.
+      inner.clear();
+      grid.for_each_near(pa.cwiseMin(pb) - Vec3::Constant(tolerance), pa.cwiseMax(pb) + Vec3::Constant(tolerance),
+                         [&](std::uint32_t v) {
+                           const double s = (mesh.positions[v] - pa).dot(ab) / length2;
+                           if (v != a && v != b && s > 0.0 && s < 1.0 &&
+                               (pa + s * ab - mesh.positions[v]).norm() <= tolerance)
+                             inner.emplace_back(s, v);
+                         });
       if (inner.empty()) continue;
       std::sort(inner.begin(), inner.end());
-      replaced[t] = true;
+      replaced[t] = 1;
       std::uint32_t previous = a;
       for (const auto& [s, v] : inner) {
-        added.push_back({previous, v, c});
+        if (previous == a)
+          first_parts.push_back({t, {a, v, c}});
+        else
+          added.push_back({previous, v, c});
         previous = v;
       }
       added.push_back({previous, b, c});
       splits += inner.size();
     }
-    if (added.empty()) break;
-    std::vector<Triangle> kept;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      if (!replaced[t]) kept.push_back(mesh.triangles[t]);
-    kept.insert(kept.end(), added.begin(), added.end());
-    mesh.triangles = std::move(kept);
+    if (first_parts.empty()) break;
+    for (const auto& [t, part] : first_parts) mesh.triangles[t] = part;
+    for (const Triangle& part : added) {
+      candidates.push_back(static_cast<std::uint32_t>(mesh.triangles.size()));
+      mesh.triangles.push_back(part);
+    }
   }
   return splits;
 }

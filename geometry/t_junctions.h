@@ -14,4 +14,8 @@ namespace dg {
 /// faster on large assemblies and gives the same result when the flags cover every open edge.
 std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<char>* seam_vertices = nullptr);
 
+/// One flag per vertex of `mesh`: 1 when the vertex lies on an open edge (an edge used by one
+/// triangle only). Pieces' flags, concatenated, are the `seam_vertices` of their assembly.
+std::vector<char> open_edge_vertices(const TriangleMesh& mesh);
+
 }  // namespace dg

@@ -56,19 +56,7 @@ void variants_row(const std::string& asset, const nlohmann::json& parameters, st
              count, static_cast<double>(total_triangles) / count, 1000.0 * seconds / count, retried);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"dockgrammar-bench-synthesis: variants, grid resize and verify timings"};
-  std::vector<std::size_t> sizes{10000, 100000, 500000};
-  int count = 10;
-  int threads = 1;
-  app.add_option("--sizes", sizes, "Target triangle counts of the exemplars")->delimiter(',');
-  app.add_option("--count", count, "Variants per exemplar");
-  app.add_option("--threads", threads, "Worker threads");
-  CLI11_PARSE(app, argc, argv);
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-
+void print_variants_table(const std::vector<std::size_t>& sizes, int count, int threads) {
   fmt::print("Random context-free variants ({} thread(s); derivation + Embree collision checks + welding, no file output)\n\n",
              threads);
   fmt::print("| exemplar | triangles | docking sites + rules s | variants | mean variant triangles | ms per variant | retried choices |\n");
@@ -77,25 +65,54 @@ int main(int argc, char** argv) {
     variants_row("pipe_tree", {{"depth", 3}}, size, count);
     variants_row("fence", {{"n", 4}}, size, count);
   }
+}
 
-  const Analysed facade = analyse("facade", {{"columns", 3}, {"rows", 4}}, 100000);
+// Resizes facade(3, 4) of about `triangles` triangles to 20 x 20 and verifies the result
+// against it unless `skip_verify`.
+void facade_resize_rows(std::size_t triangles, bool skip_verify) {
+  const Analysed facade = analyse("facade", {{"columns", 3}, {"rows", 4}}, triangles);
   const std::vector<dg::GridRule> grids = dg::find_grids(facade.prepared, facade.symmetries);
-  if (!grids.empty() && grids.front().directions.size() == 2) {
-    const double eps = facade.prepared.surface.eps();
-    const auto pieces = dg::cut_grid_pieces(facade.prepared.model.mesh, grids.front(), eps);
-    dg::Stopwatch stopwatch;
-    const dg::TriangleMesh resized = dg::resize_grid(grids.front(), pieces, {20, 20}, 1e-6 * eps);
-    const double resize_seconds = stopwatch.lap();
-    fmt::print("\nResize of a {}-triangle facade 3x4 to 20 x 20: {:.2f} s ({} triangles).\n",
-               facade.prepared.model.mesh.triangles.size(), resize_seconds, resized.triangles.size());
-    dg::Model exemplar, candidate;
-    exemplar.mesh = facade.prepared.model.mesh;
-    candidate.mesh = resized;
-    stopwatch.lap();
-    const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(candidate));
-    const double verify_seconds = stopwatch.lap();
-    fmt::print("verify of it: {:.2f} s, {:.2f} s per 100k candidate triangles ({}).\n", verify_seconds,
-               verify_seconds * 1e5 / static_cast<double>(resized.triangles.size()), report.pass ? "pass" : "FAIL");
+  if (grids.empty() || grids.front().directions.size() != 2) {
+    fmt::print("\nThe facade gave no 2-grid: no resize figures.\n");
+    return;
   }
+  const double eps = facade.prepared.surface.eps();
+  const auto pieces = dg::cut_grid_pieces(facade.prepared.model.mesh, grids.front(), eps);
+  dg::Stopwatch stopwatch;
+  const dg::TriangleMesh resized = dg::resize_grid(grids.front(), pieces, {20, 20}, 1e-6 * eps);
+  const double resize_seconds = stopwatch.lap();
+  fmt::print("\nResize of a {}-triangle facade 3x4 to 20 x 20: {:.2f} s ({} triangles).\n",
+             facade.prepared.model.mesh.triangles.size(), resize_seconds, resized.triangles.size());
+  if (skip_verify) return;
+  dg::Model exemplar, candidate;
+  exemplar.mesh = facade.prepared.model.mesh;
+  candidate.mesh = resized;
+  stopwatch.lap();
+  const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(candidate));
+  const double verify_seconds = stopwatch.lap();
+  fmt::print("verify of it: {:.2f} s, {:.2f} s per 100k candidate triangles ({}, {} of {} samples r-similar).\n",
+             verify_seconds, verify_seconds * 1e5 / static_cast<double>(resized.triangles.size()),
+             report.pass ? "pass" : "FAIL", report.similarity.similar, report.similarity.samples);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"dockgrammar-bench-synthesis: variants, grid resize and verify timings"};
+  std::vector<std::size_t> sizes{10000, 100000, 500000};
+  int count = 10;
+  int threads = 1;
+  std::size_t facade_triangles = 100000;
+  bool skip_variants = false, skip_verify = false;
+  app.add_option("--sizes", sizes, "Target triangle counts of the exemplars")->delimiter(',');
+  app.add_option("--count", count, "Variants per exemplar");
+  app.add_option("--threads", threads, "Worker threads");
+  app.add_option("--facade-triangles", facade_triangles, "Target triangle count of the facade 3x4 resized to 20 x 20");
+  app.add_flag("--skip-variants", skip_variants, "No variant table (only the facade resize and its verify)");
+  app.add_flag("--skip-verify", skip_verify, "No verify of the resized facade");
+  CLI11_PARSE(app, argc, argv);
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  if (!skip_variants) print_variants_table(sizes, count, threads);
+  facade_resize_rows(facade_triangles, skip_verify);
   return 0;
 }
