@@ -5,6 +5,7 @@
 #include "grammar/open_lsystem.h"
 #include "grammar/random.h"
 #include "synthesis/growth_queries.h"
+#include "synthesis/growth_string.h"
 #include "synthesis/segment2d.h"
 #include "synthesis/turtle.h"
 
@@ -12,7 +13,9 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <tuple>
+#include <unordered_set>
 
 namespace dg {
 
@@ -30,44 +33,32 @@ struct PendingSeed {
   auto key() const { return std::tie(step, received, order, t); }
 };
 
-// A kept element of a run: the module that drew it and its index in the guide's grid (segments)
-// or its shape (motifs).
-struct DrawnSegment {
-  std::size_t module = 0;
-  std::size_t id = 0;
-};
-struct DrawnMotif {
-  std::size_t module = 0;
-  Path2d path;
-};
-
-// One seed's string while it grows, with what its last interpretation found: kept elements in
-// module order, and for every `[` its matching `]` and the pose before it, so that unchanged
-// branches at unchanged poses are not walked again.
+// One seed's string while it grows, and its fresh queries waiting for answers.
 struct SeedRun {
-  SeedStart start;
-  std::vector<Module> modules;
-  std::vector<char> fresh;
-  std::vector<std::size_t> origins;  // module -> index before the last rewrite (empty: new run)
+  GrowingString string;
   bool active = true;
   bool dirty = true;
-  std::vector<DrawnSegment> segments;
-  std::vector<DrawnMotif> motifs;
-  std::vector<std::size_t> frozen_segments;  // grid ids of elements of branches taken out (freeze)
-  std::vector<Path2d> frozen_motifs;
-  std::vector<std::size_t> match;     // `[` -> its `]` (npos elsewhere)
-  std::vector<TurtlePose> poses;      // `[` -> the pose before it
-  std::vector<std::pair<std::size_t, TurtlePose>> queries;  // fresh query modules and where they are
+  std::vector<PendingQuery> queries;
 };
 
-// A token reserved by the ?X at `module` of run `run` of guide `guide`.
+// Where a branch holding a reservation crossed the link's edge: the crossing ?X, the edge
+// parameter and the values that travel with the message.
+struct Crossing {
+  std::size_t module = 0;
+  double t = 0;
+  std::vector<double> carried;
+};
+
+// A token of `link` reserved by a branch of run `run` of guide `guide` (§3.3.2): `holders` are
+// the branch's modules that can still act (queries, or symbols with productions), followed
+// through every rewrite; the token is used when one of them crosses the link's edge and is
+// drawn, and freed when none is left.
 struct Reservation {
   std::size_t guide = 0;
   std::size_t run = 0;
-  std::size_t module = 0;
   std::size_t link = 0;
-  double t = 0;
-  std::vector<double> carried;
+  std::vector<std::size_t> holders;
+  std::optional<Crossing> crossing;
 };
 
 // One growing guide.
@@ -75,6 +66,7 @@ struct GuideRunner {
   const Guide* guide = nullptr;
   const LSystem* system = nullptr;
   std::unique_ptr<Rewriter> rewriter;
+  std::unordered_set<std::string> rewritten_symbols;  // symbols with productions
   TurtleOptions turtle;
   std::unique_ptr<Random> random;
   SegmentGrid grid;
@@ -84,6 +76,11 @@ struct GuideRunner {
   std::vector<std::size_t> provisional;  // grid ids of segments that ?X added in the last answer phase
   std::size_t laid_out = 0;              // live segments when the grid's cells were last laid out
   Vec2 low = Vec2::Zero(), high = Vec2::Zero();
+
+  // Whether a fresh module can still change: a query, or a symbol with productions.
+  bool growing(const Module& module) const {
+    return is_query_symbol(module.symbol) || rewritten_symbols.count(module.symbol) > 0;
+  }
 };
 
 [[noreturn]] void fail_guide(const Guide& guide, const std::string& problem) {
@@ -125,6 +122,8 @@ class Growth {
       if (!grows[g] || !guide.lsystem) continue;
       runner.system = &scene.lsystems[*guide.lsystem].system;
       runner.rewriter = std::make_unique<Rewriter>(*runner.system);
+      for (const Production& production : runner.system->productions)
+        runner.rewritten_symbols.insert(production.predecessor);
       try {
         runner.turtle = turtle_options(runner.system->turtle);
       } catch (const InputError& error) {
@@ -174,12 +173,7 @@ class Growth {
       }
       ++result.regrown_guides;
       GuideGrowth& out = result.guides[g];
-      for (const SeedRun& run : guides_[g].runs) {
-        for (std::size_t id : run.frozen_segments) out.segments.push_back(guides_[g].grid[id]);
-        for (const DrawnSegment& segment : run.segments) out.segments.push_back(guides_[g].grid[segment.id]);
-        out.motifs.insert(out.motifs.end(), run.frozen_motifs.begin(), run.frozen_motifs.end());
-        for (const DrawnMotif& motif : run.motifs) out.motifs.push_back(motif.path);
-      }
+      for (const SeedRun& run : guides_[g].runs) run.string.collect(guides_[g].grid, out.segments, out.motifs);
       out.received = guides_[g].received;
       out.seeds = guides_[g].runs.size();
     }
@@ -221,179 +215,7 @@ class Growth {
     start.values = std::move(seed.values);
     if (!runner.system) return;  // a guide without L-system receives but does not grow
     start.element_id = static_cast<double>(runner.runs.size());
-    SeedRun run;
-    run.start = std::move(start);
-    run.modules = runner.system->axiom;
-    run.fresh.assign(run.modules.size(), 1);
-    apply_cuts(run.modules, nullptr, &run.fresh);
-    runner.runs.push_back(std::move(run));
-  }
-
-  // Walks the run's string and updates its kept elements in the guide's grid. A `[` that was
-  // copied unchanged together with its whole branch, at the same pose as before, is skipped:
-  // its elements are taken over (drawn by the same modules at the same poses, they are equal).
-  void interpret(GuideRunner& runner, SeedRun& run) {
-    constexpr std::size_t none = static_cast<std::size_t>(-1);
-    const std::vector<Vec2>& polygon = runner.guide->polygon;
-    const std::size_t n = run.modules.size();
-    std::vector<DrawnSegment> old_segments = std::move(run.segments);
-    std::vector<DrawnMotif> old_motifs = std::move(run.motifs);
-    std::vector<std::size_t> old_match = std::move(run.match);
-    std::vector<TurtlePose> old_poses = std::move(run.poses);
-    std::vector<char> reused(old_segments.size(), 0);
-    run.segments.clear();
-    run.motifs.clear();
-    run.queries.clear();
-    run.match.assign(n, none);
-    run.poses.resize(n);
-    std::vector<std::size_t> fresh_before(n + 1, 0);  // fresh modules before index k
-    for (std::size_t k = 0; k < n; ++k) fresh_before[k + 1] = fresh_before[k] + (run.fresh[k] ? 1 : 0);
-    std::vector<std::size_t> open;  // `[` not closed yet
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::string& symbol = run.modules[k].symbol;
-      if (symbol == "[") {
-        open.push_back(k);
-      } else if (symbol == "]" && !open.empty()) {
-        run.match[open.back()] = k;
-        open.pop_back();
-      }
-    }
-    auto by_module = [](const auto& element, std::size_t module) { return element.module < module; };
-
-    TurtleVisitor visitor;
-    visitor.branch = [&](std::size_t k, const TurtlePose& pose) -> std::size_t {
-      run.poses[k] = pose;
-      if (!run.origins.empty() && !run.fresh[k]) {
-        const std::size_t i = run.origins[k];
-        const std::size_t j = i < old_match.size() ? old_match[i] : none;
-        if (j != none && k + (j - i) < n && run.origins[k + (j - i)] == j && fresh_before[k + (j - i) + 1] == fresh_before[k] &&
-            old_poses[i].position == pose.position && old_poses[i].heading_deg == pose.heading_deg &&
-            old_poses[i].scale == pose.scale) {
-          const std::size_t shift = k - i;  // new index = old index + shift inside the branch
-          auto first = std::lower_bound(old_segments.begin(), old_segments.end(), i, by_module);
-          for (auto it = first; it != old_segments.end() && it->module <= j; ++it) {
-            run.segments.push_back({it->module + shift, it->id});
-            reused[static_cast<std::size_t>(it - old_segments.begin())] = 1;
-          }
-          auto motif = std::lower_bound(old_motifs.begin(), old_motifs.end(), i, by_module);
-          for (; motif != old_motifs.end() && motif->module <= j; ++motif)
-            run.motifs.push_back({motif->module + shift, std::move(motif->path)});
-          for (std::size_t m = i; m <= j; ++m)
-            if (old_match[m] != none) run.poses[m + shift] = old_poses[m];
-          return k + (j - i) + 1;
-        }
-      }
-      return k;
-    };
-    // A copied drawing module that draws exactly its old segment keeps it (old segments are in
-    // module order and origins grow with k, so one cursor finds them).
-    std::size_t cursor = 0;
-    visitor.segment = [&](std::size_t k, const Vec2& from, const Vec2& to) {
-      if (!run.origins.empty() && !run.fresh[k]) {
-        const std::size_t i = run.origins[k];
-        while (cursor < old_segments.size() && old_segments[cursor].module < i) ++cursor;
-        if (cursor < old_segments.size() && old_segments[cursor].module == i && !reused[cursor]) {
-          const GridSegment& old = runner.grid[old_segments[cursor].id];
-          if (old.a == from && old.b == to) {
-            run.segments.push_back({k, old_segments[cursor].id});
-            reused[cursor] = 1;
-            return;
-          }
-        }
-      }
-      if (point_in_polygon(0.5 * (from + to), polygon))
-        run.segments.push_back({k, runner.grid.insert({from, to, run.start.element_id})});
-    };
-    visitor.motif = [&](std::size_t k, const Path2d& motif, const TurtlePose& pose, double size) {
-      if (point_in_polygon(pose.position, polygon)) run.motifs.push_back({k, place_motif(motif, pose, size)});
-    };
-    visitor.other = [&](std::size_t k, const TurtlePose& pose) -> double {
-      const Module& module = run.modules[k];
-      if (!is_query_symbol(module.symbol)) return 0;
-      if (run.fresh[k]) run.queries.emplace_back(k, pose);
-      return is_collision_query(module.symbol) ? collision_query_length(module, !run.fresh[k], pose.scale) : 0;
-    };
-    walk_turtle(run.modules, runner.turtle, run.start.pose, visitor);
-    for (std::size_t e = 0; e < old_segments.size(); ++e)
-      if (!reused[e]) runner.grid.remove(old_segments[e].id);
-  }
-
-  // Takes finished branches out of the string: a closed `[...]` whose modules were all copied
-  // unchanged by the last step (so no production applies to any of them, ever: their
-  // parameters are fixed) and before which no new module stands in any enclosing branch (so no
-  // later `cut` can reach it). Such a branch leaves the turtle where it found it, so the rest of
-  // the string is interpreted exactly as before; its elements stay in the grid. This keeps the
-  // work of a step proportional to the growing part of the string.
-  void freeze(SeedRun& run) {
-    constexpr std::size_t none = static_cast<std::size_t>(-1);
-    const std::size_t n = run.modules.size();
-    if (run.origins.empty()) return;  // a new run: everything is fresh
-    std::vector<char> remove(n, 0);
-    std::vector<char> live_before;  // per open `[`: a fresh module stood before it (inherited)
-    bool live = false;
-    std::size_t removed = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::string& symbol = run.modules[k].symbol;
-      if (symbol == "[") {
-        const std::size_t end = run.match[k];
-        if (!live && end != none) {
-          bool all_copied = true;
-          for (std::size_t m = k; m <= end && all_copied; ++m) all_copied = !run.fresh[m];
-          if (all_copied) {
-            std::fill(remove.begin() + static_cast<std::ptrdiff_t>(k), remove.begin() + static_cast<std::ptrdiff_t>(end) + 1, 1);
-            removed += end - k + 1;
-            k = end;
-            continue;
-          }
-        }
-        live_before.push_back(live);
-      } else if (symbol == "]" && !live_before.empty()) {
-        live = live_before.back();
-        live_before.pop_back();
-        continue;
-      }
-      live = live || run.fresh[k];
-    }
-    if (removed == 0) return;
-    std::vector<std::size_t> renumber(n, none);
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < n; ++k)
-      if (!remove[k]) renumber[k] = kept++;
-    std::size_t write = 0;
-    for (const DrawnSegment& segment : run.segments) {
-      if (remove[segment.module]) {
-        run.frozen_segments.push_back(segment.id);
-      } else {
-        run.segments[write++] = {renumber[segment.module], segment.id};
-      }
-    }
-    run.segments.resize(write);
-    write = 0;
-    for (DrawnMotif& motif : run.motifs) {
-      if (remove[motif.module]) {
-        run.frozen_motifs.push_back(std::move(motif.path));
-      } else {
-        run.motifs[write++] = {renumber[motif.module], std::move(motif.path)};
-      }
-    }
-    run.motifs.resize(write);
-    for (auto& query : run.queries) query.first = renumber[query.first];
-    std::vector<Module> modules;
-    std::vector<char> fresh;
-    std::vector<std::size_t> match;
-    std::vector<TurtlePose> poses;
-    modules.reserve(kept);
-    for (std::size_t k = 0; k < n; ++k) {
-      if (remove[k]) continue;
-      modules.push_back(std::move(run.modules[k]));
-      fresh.push_back(run.fresh[k]);
-      match.push_back(run.match[k] == none ? none : renumber[run.match[k]]);
-      poses.push_back(run.poses[k]);
-    }
-    run.modules = std::move(modules);
-    run.fresh = std::move(fresh);
-    run.match = std::move(match);
-    run.poses = std::move(poses);
+    runner.runs.push_back({GrowingString(runner.system->axiom, std::move(start)), true, true, {}});
   }
 
   void answer_all() {
@@ -402,59 +224,95 @@ class Growth {
       GuideRunner& runner = guides_[g];
       if (std::any_of(runner.runs.begin(), runner.runs.end(), [](const SeedRun& r) { return r.dirty; })) {
         try {
-          answer_guide(runner);
+          answer_guide(g);
         } catch (const InputError& error) {
           fail_guide(*runner.guide, error.what());
         }
       }
-      for (const SeedRun& run : runner.runs)
-        elements += run.segments.size() + run.motifs.size() + run.frozen_segments.size() + run.frozen_motifs.size();
+      for (const SeedRun& run : runner.runs) elements += run.string.elements();
     }
     if (elements > scene_.limits.max_elements)
       throw LimitError("growth exceeds " + std::to_string(scene_.limits.max_elements) +
                        " elements (element limit); use fewer tokens or seeds, or rules that stop");
   }
 
-  void answer_guide(GuideRunner& runner) {
+  // Draws the changed strings of guide g, collapses what cannot change any more, and answers
+  // the fresh queries in string order, seeds in start order.
+  void answer_guide(std::size_t g) {
+    GuideRunner& runner = guides_[g];
     for (std::size_t id : runner.provisional) runner.grid.remove(id);
     runner.provisional.clear();
-    for (SeedRun& run : runner.runs)
-      if (run.dirty) {
-        interpret(runner, run);
-        freeze(run);
-      }
+    const GrowthCanvas canvas{&runner.guide->polygon, &runner.turtle, &runner.grid};
+    const auto growing = [&runner](const Module& module) { return runner.growing(module); };
+    for (std::size_t r = 0; r < runner.runs.size(); ++r) {
+      SeedRun& run = runner.runs[r];
+      if (!run.dirty) continue;
+      run.queries = run.string.interpret(canvas);
+      const std::vector<std::size_t> renumber = run.string.collapse(growing);
+      for (PendingQuery& query : run.queries) query.module = renumber[query.module];
+      for (Reservation& reservation : reservations_)
+        if (reservation.guide == g && reservation.run == r)
+          for (std::size_t& holder : reservation.holders) holder = renumber[holder];
+    }
     if (runner.grid.live() > 4 * runner.laid_out + 256) {  // re-lay the cells for the grown count
       double length_sum = 0;
-      std::size_t count = 0;
-      for (std::size_t id = 0; id < runner.grid.size(); ++id) {
-        length_sum += (runner.grid[id].b - runner.grid[id].a).norm();
-        ++count;
-      }
-      runner.grid.relayout(count ? 0.5 * length_sum / count : 0);
+      for (std::size_t id = 0; id < runner.grid.size(); ++id) length_sum += (runner.grid[id].b - runner.grid[id].a).norm();
+      runner.grid.relayout(runner.grid.size() ? 0.5 * length_sum / static_cast<double>(runner.grid.size()) : 0);
       runner.laid_out = runner.grid.live();
     }
     const std::size_t before = runner.grid.size();
     for (std::size_t r = 0; r < runner.runs.size(); ++r) {
       SeedRun& run = runner.runs[r];
-      for (const auto& [index, pose] : run.queries) {
-        const auto crossing = answer_query(run.modules[index], pose, runner.environment, run.start);
-        if (crossing) reserve(runner, r, index, *crossing);
+      for (const PendingQuery& query : run.queries) {
+        runner.environment.available = [&](std::size_t link) { return link_available(g, r, query.module, link); };
+        const QueryOutcome outcome =
+            answer_query(run.string.modules()[query.module], query.pose, runner.environment, run.string.start());
+        if (outcome.selected_link) select(g, r, query.module, *outcome.selected_link);
+        if (outcome.crossing) cross(g, r, query.module, *outcome.crossing);
       }
       run.queries.clear();
-      std::fill(run.fresh.begin(), run.fresh.end(), 0);
+      run.string.answered();
       run.dirty = false;
     }
+    runner.environment.available = nullptr;
     for (std::size_t id = before; id < runner.grid.size(); ++id) runner.provisional.push_back(id);
   }
 
-  void reserve(GuideRunner& runner, std::size_t run, std::size_t module, const EdgeCrossing& crossing) {
-    for (std::size_t link : crossing.links)
-      if (tokens_[link].free > 0) {
-        --tokens_[link].free;
-        ++tokens_[link].reserved;
-        reservations_.push_back({static_cast<std::size_t>(&runner - guides_.data()), run, module, link, crossing.t,
-                                 crossing.carried});
-      }
+  // The reservation of `link` that module `module` of run r of guide g holds, or nullptr.
+  Reservation* held(std::size_t g, std::size_t r, std::size_t module, std::size_t link) {
+    for (Reservation& reservation : reservations_)
+      if (reservation.guide == g && reservation.run == r && reservation.link == link &&
+          std::find(reservation.holders.begin(), reservation.holders.end(), module) != reservation.holders.end())
+        return &reservation;
+    return nullptr;
+  }
+
+  // A link query may select a link without tokens (it only steers), one with a free token, or
+  // one its own branch reserved; links whose tokens others hold or used are not seen.
+  bool link_available(std::size_t g, std::size_t r, std::size_t module, std::size_t link) {
+    return scene_.links[link].tokens == 0 || tokens_[link].free > 0 || held(g, r, module, link);
+  }
+
+  Reservation& reserve(std::size_t g, std::size_t r, std::size_t module, std::size_t link) {
+    --tokens_[link].free;
+    ++tokens_[link].reserved;
+    reservations_.push_back({g, r, link, {module}, std::nullopt});
+    return reservations_.back();
+  }
+
+  // A link query of module `module` selected `link` as its target: its branch reserves a token.
+  void select(std::size_t g, std::size_t r, std::size_t module, std::size_t link) {
+    if (tokens_[link].free > 0 && !held(g, r, module, link)) reserve(g, r, module, link);
+  }
+
+  // The ?X at `module` crossed an edge holding links: it uses the tokens its branch reserved
+  // there and takes a free token of the other links on that edge.
+  void cross(std::size_t g, std::size_t r, std::size_t module, const EdgeCrossing& crossing) {
+    for (std::size_t link : crossing.links) {
+      Reservation* reservation = held(g, r, module, link);
+      if (!reservation && tokens_[link].free > 0) reservation = &reserve(g, r, module, link);
+      if (reservation) reservation->crossing = Crossing{module, crossing.t, crossing.carried};
+    }
   }
 
   void rewrite_all(int step) {
@@ -471,54 +329,66 @@ class Growth {
         fresh.clear();
         bool rewrote = false;
         try {
-          rewrote = runner.rewriter->step(run.modules, *runner.random, next, &origins, &fresh,
+          rewrote = runner.rewriter->step(run.string.modules(), *runner.random, next, &origins, &fresh,
                                           scene_.limits.max_modules, step);
         } catch (const InputError& error) {
           fail_guide(*runner.guide, error.what());
         }
-        if (rewrote) {
-          apply_cuts(next, &origins, &fresh);
-          run.modules.swap(next);
-          run.fresh.swap(fresh);
-          run.origins = origins;
-          run.dirty = true;
-        } else {
-          run.modules.swap(next);  // unchanged, but moved by the rewriter
-          run.active = false;
-        }
-        resolve(g, r, rewrote, origins, step);
+        if (rewrote) apply_cuts(next, &origins, &fresh);
+        run.string.replace(next, fresh, origins, runner.grid);
+        run.dirty = rewrote;
+        run.active = rewrote;
+        resolve(g, r, origins, step);
       }
     }
   }
 
-  // Settles the reservations of run r of guide g after its rewrite: used when the reserving ?X
-  // became a drawn segment, free again otherwise.
-  void resolve(std::size_t g, std::size_t r, bool rewrote, const std::vector<std::size_t>& origins, int step) {
+  // Follows the reservations of run r of guide g through its rewrite: a crossing is used when
+  // the crossing ?X became a drawn segment (the target guide gets a seed); otherwise the
+  // holders move to their descendants that can still act, and the token is freed when none is
+  // left (the branch was erased or stopped).
+  void resolve(std::size_t g, std::size_t r, const std::vector<std::size_t>& origins, int step) {
     const GuideRunner& runner = guides_[g];
-    const SeedRun& run = runner.runs[r];
+    const GrowingString& string = runner.runs[r].string;
+    auto descendants = [&](std::size_t module) {
+      const auto [first, last] = std::equal_range(origins.begin(), origins.end(), module);
+      return std::pair{static_cast<std::size_t>(first - origins.begin()), static_cast<std::size_t>(last - origins.begin())};
+    };
     for (auto it = reservations_.begin(); it != reservations_.end();) {
       if (it->guide != g || it->run != r) {
         ++it;
         continue;
       }
-      bool reached = false;
-      if (rewrote) {
-        const auto [first, last] = std::equal_range(origins.begin(), origins.end(), it->module);
-        for (auto k = first; k != last && !reached; ++k) {
-          const std::size_t index = static_cast<std::size_t>(k - origins.begin());
-          reached = run.fresh[index] && std::find(runner.turtle.draw_symbols.begin(), runner.turtle.draw_symbols.end(),
-                                                  run.modules[index].symbol) != runner.turtle.draw_symbols.end();
-        }
-      }
       TokenState& token = tokens_[it->link];
-      --token.reserved;
-      if (reached) {
-        ++token.used;
-        schedule({step, scene_.links[it->link].to_guide, true, it->link, it->t, std::move(it->carried)});
-      } else {
-        ++token.free;
+      if (it->crossing) {
+        bool reached = false;
+        const auto [first, last] = descendants(it->crossing->module);
+        for (std::size_t k = first; k < last && !reached; ++k)
+          reached = string.fresh()[k] && std::find(runner.turtle.draw_symbols.begin(), runner.turtle.draw_symbols.end(),
+                                                   string.modules()[k].symbol) != runner.turtle.draw_symbols.end();
+        if (reached) {
+          --token.reserved;
+          ++token.used;
+          schedule({step, scene_.links[it->link].to_guide, true, it->link, it->crossing->t, std::move(it->crossing->carried)});
+          it = reservations_.erase(it);
+          continue;
+        }
+        it->crossing.reset();
       }
-      it = reservations_.erase(it);
+      std::vector<std::size_t> holders;
+      for (std::size_t holder : it->holders) {
+        const auto [first, last] = descendants(holder);
+        for (std::size_t k = first; k < last; ++k)
+          if (string.fresh()[k] && runner.growing(string.modules()[k])) holders.push_back(k);
+      }
+      it->holders = std::move(holders);
+      if (it->holders.empty()) {
+        --token.reserved;
+        ++token.free;
+        it = reservations_.erase(it);
+      } else {
+        ++it;
+      }
     }
   }
 

@@ -1,11 +1,13 @@
 #pragma once
 // Guided growth (Beneš et al. 2011 §3.3): every seed's Open L-system string is rewritten in
 // parallel, one step for all at a time; between steps the turtle interprets each string from
-// its seed and the guide's environment answers the fresh query modules (growth_queries.h).
-// A ?X that crosses an edge reserves a token of every link on that edge that has a free one;
-// when the reserving ?X is rewritten into a drawn segment the token is used and a seed starts
-// on the target edge (parameters of the ?X travel with it); otherwise the token is freed again.
-// Growth ends when no string rewrites and no seed waits; tokens bound it.
+// its seed (growth_string.h: only the parts that can still change cost work) and the guide's
+// environment answers the fresh query modules (growth_queries.h). Tokens (§3.3.2): a link
+// query that selects a link reserves a free token for its branch and hides the link from other
+// branches; a ?X of the branch that crosses the link's edge and is rewritten into a drawn
+// segment uses it and starts a seed on the target edge (parameters of the ?X travel with it);
+// when the branch has no module left that can act, the token is freed. Growth ends when no
+// string rewrites and no seed waits; tokens bound it.
 
 #include "synthesis/growth_scene.h"
 #include "synthesis/path2d.h"

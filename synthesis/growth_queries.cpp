@@ -26,6 +26,10 @@ using IdFilter = std::optional<double>;
 
 bool passes(const IdFilter& filter, double id) { return !filter || *filter == id; }
 
+bool selectable(const GuideEnvironment& environment, const LinkEdge& link, const IdFilter& filter) {
+  return passes(filter, static_cast<double>(link.link)) && (!environment.available || environment.available(link.link));
+}
+
 // Outgoing links that start on `edge`, in scene order.
 std::vector<std::size_t> links_on_edge(const GuideEnvironment& environment, std::size_t edge) {
   std::vector<std::size_t> links;
@@ -37,7 +41,7 @@ std::vector<std::size_t> links_on_edge(const GuideEnvironment& environment, std:
 Found nearest_link(const Vec2& p, const GuideEnvironment& environment, const IdFilter& filter) {
   Found best;
   for (const LinkEdge& link : environment.links) {
-    if (!passes(filter, static_cast<double>(link.link))) continue;
+    if (!selectable(environment, link, filter)) continue;
     const Vec2 point = link.a + closest_parameter(p, link.a, link.b) * (link.b - link.a);
     const double distance = (point - p).norm();
     if (distance < best.distance) best = {link_found, distance, point, static_cast<double>(link.link), link.edge};
@@ -77,7 +81,7 @@ Found first_link_edge(const Vec2& p, const Vec2& q, double min_t, const GuideEnv
                       const IdFilter& filter) {
   Found best;
   for (const LinkEdge& link : environment.links) {
-    if (!passes(filter, static_cast<double>(link.link))) continue;
+    if (!selectable(environment, link, filter)) continue;
     const auto crossing = cross_segments(p, q, link.a, link.b);
     if (crossing && crossing->s > min_t && crossing->s < best.distance)
       best = {link_found, crossing->s, p + crossing->s * (q - p), static_cast<double>(link.link), link.edge};
@@ -127,8 +131,9 @@ void prepend(Module& module, std::initializer_list<double> outputs) {
   module.parameters.insert(module.parameters.begin(), outputs.begin(), outputs.end());
 }
 
-void answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
-                     const IdFilter& filter) {
+// Answers a distance query; returns what it found.
+Found answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
+                      const IdFilter& filter) {
   const Vec2& p = pose.position;
   Found found;
   if (target == 'L') {
@@ -142,14 +147,16 @@ void answer_distance(Module& module, const TurtlePose& pose, const GuideEnvironm
   }
   if (found.kind == 0) {
     prepend(module, {0, 0, 0, -1});
-    return;
+    return found;
   }
   const double beta = found.distance > 0 ? turn_toward(pose.heading_deg, found.point - p) : 0;
   prepend(module, {found.kind, found.distance, beta, found.id});
+  return found;
 }
 
-void answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
-                  const IdFilter& filter) {
+// Answers a forward-distance query; returns what it found.
+Found answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment& environment, char target,
+                   const IdFilter& filter) {
   const double length = ray_length(environment);
   const Vec2 p = pose.position, q = p + heading_vector(pose.heading_deg) * length;
   const double min_t = 1e-9;
@@ -166,10 +173,12 @@ void answer_ahead(Module& module, const TurtlePose& pose, const GuideEnvironment
     prepend(module, {0, 0, -1});
   else
     prepend(module, {found.kind, found.distance * length, found.id});
+  return found;
 }
 
+// Answers a collision query (`assigned`: ?XS or ?XSI, whose second input is idin).
 std::optional<EdgeCrossing> answer_collision(Module& module, const TurtlePose& pose, GuideEnvironment& environment,
-                                             double element_id, const IdFilter& filter) {
+                                             double element_id, bool assigned, const IdFilter& filter) {
   const double length = collision_query_length(module, false, pose.scale);
   const Vec2 p = pose.position, q = p + heading_vector(pose.heading_deg) * length;
   const double min_t = 1e-6;
@@ -187,7 +196,7 @@ std::optional<EdgeCrossing> answer_collision(Module& module, const TurtlePose& p
     crossing = EdgeCrossing{links_on_edge(environment, found.edge), closest_parameter(found.point, a, b),
                             std::vector<double>(module.parameters.begin() + 1, module.parameters.end())};
   }
-  if (found.kind == 0) environment.elements->insert({p, q, element_id});
+  if (found.kind == 0) environment.elements->insert({p, q, assigned ? module.parameters[1] : element_id});
   prepend(module, {found.kind, found.id});
   return crossing;
 }
@@ -195,12 +204,19 @@ std::optional<EdgeCrossing> answer_collision(Module& module, const TurtlePose& p
 }  // namespace
 
 bool is_growth_query(const std::string& symbol) {
-  static const std::vector<std::string> known{"?DL",  "?DG",  "?DA",  "?NL",  "?NG",  "?NA", "?X",   "?seed",
-                                              "?DLI", "?DGI", "?DAI", "?NLI", "?NGI", "?NAI", "?XI"};
+  static const std::vector<std::string> known{"?DL",  "?DG",  "?DA",  "?NL",  "?NG", "?NA", "?X",  "?seed", "?DLI",
+                                              "?DGI", "?DAI", "?NLI", "?NGI", "?NAI", "?XI", "?XS", "?XSI"};
   return std::find(known.begin(), known.end(), symbol) != known.end();
 }
 
-bool is_collision_query(const std::string& symbol) { return symbol == "?X" || symbol == "?XI"; }
+bool is_collision_query(const std::string& symbol) {
+  return symbol == "?X" || symbol == "?XI" || symbol == "?XS" || symbol == "?XSI";
+}
+
+std::optional<double> assigned_id(const Module& module) {
+  if ((module.symbol == "?XS" || module.symbol == "?XSI") && module.parameters.size() > 3) return module.parameters[3];
+  return std::nullopt;
+}
 
 double collision_query_length(const Module& module, bool answered, double scale) {
   const std::size_t at = answered ? 2 : 0;
@@ -209,30 +225,35 @@ double collision_query_length(const Module& module, bool answered, double scale)
   return module.parameters[at] * scale;
 }
 
-std::optional<EdgeCrossing> answer_query(Module& module, const TurtlePose& pose, GuideEnvironment& environment,
-                                         const SeedStart& seed) {
+QueryOutcome answer_query(Module& module, const TurtlePose& pose, GuideEnvironment& environment, const SeedStart& seed) {
   const std::string& symbol = module.symbol;
   if (!is_growth_query(symbol))
     throw InputError("unknown query module " + symbol +
-                     " (known: ?DL ?DG ?DA ?NL ?NG ?NA ?X ?seed, and ?DLI ... ?XI with an id filter)");
+                     " (known: ?DL ?DG ?DA ?NL ?NG ?NA ?X ?XS ?seed, and ?DLI ... ?XI ?XSI with an id filter)");
+  const bool assigned = symbol == "?XS" || symbol == "?XSI";
+  if (assigned && module.parameters.size() < 2)
+    throw InputError(symbol + " needs the id it gives the tested segment as its second argument, like ?XS(2, 7)");
   const bool filtered = symbol.back() == 'I';
   IdFilter filter;
-  if (filtered) {  // idtest: the first input (?XI: the second, after delta)
-    const std::size_t at = symbol == "?XI" ? 1 : 0;
+  if (filtered) {  // idtest: the first input (?XI: the second, after delta; ?XSI: the third, after idin)
+    const std::size_t at = symbol == "?XI" ? 1 : symbol == "?XSI" ? 2 : 0;
+    static const char* const ordinal[] = {"first", "second", "third"};
     if (module.parameters.size() <= at)
-      throw InputError(symbol + " needs the id it looks for as its " + (at ? "second" : "first") + " argument");
+      throw InputError(symbol + " needs the id it looks for as its " + ordinal[at] + " argument");
     filter = module.parameters[at];
   }
-  if (is_collision_query(symbol)) return answer_collision(module, pose, environment, seed.element_id, filter);
-  if (symbol == "?seed") {
+  QueryOutcome outcome;
+  if (is_collision_query(symbol)) {
+    outcome.crossing = answer_collision(module, pose, environment, seed.element_id, assigned, filter);
+  } else if (symbol == "?seed") {
     if (!seed.values.empty()) module.parameters = seed.values;
     prepend(module, {seed.pose.position.x(), seed.pose.position.y(), seed.pose.heading_deg});
-  } else if (symbol[1] == 'D') {
-    answer_distance(module, pose, environment, symbol[2], filter);
   } else {
-    answer_ahead(module, pose, environment, symbol[2], filter);
+    const Found found = symbol[1] == 'D' ? answer_distance(module, pose, environment, symbol[2], filter)
+                                         : answer_ahead(module, pose, environment, symbol[2], filter);
+    if (symbol[2] == 'L' && found.kind == link_found) outcome.selected_link = static_cast<std::size_t>(found.id);
   }
-  return std::nullopt;
+  return outcome;
 }
 
 }  // namespace dg

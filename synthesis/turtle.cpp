@@ -77,8 +77,8 @@ ActionTable action_table(const TurtleOptions& options) {
 
 }  // namespace
 
-void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
-                 const TurtleVisitor& visitor) {
+TurtlePose walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
+                       const TurtleVisitor& visitor) {
   Random random(options.seed);
   auto jitter_factor = [&] { return options.jitter_scale > 0 ? 1 + random.uniform(-1, 1) * options.jitter_scale : 1.0; };
   auto jitter_angle = [&] { return options.jitter_angle_deg > 0 ? random.uniform(-1, 1) * options.jitter_angle_deg : 0.0; };
@@ -99,13 +99,7 @@ void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& option
     } else {
       action = action_of(symbol, options, motif);
     }
-    if (action == TurtleAction::Push && visitor.branch) {
-      const std::size_t next = visitor.branch(i, state);
-      if (next > i) {
-        i = next - 1;
-        continue;
-      }
-    }
+    if (visitor.before) visitor.before(i, state);
     switch (action) {
       case TurtleAction::Motif: {
         const double size = state.scale * jitter_factor();
@@ -145,19 +139,11 @@ void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& option
         stack.pop_back();
         break;
       case TurtleAction::Other:
-        if (visitor.other) {
-          const double ahead = visitor.other(i, state);
-          if (ahead != 0) {
-            if (state.heading_deg != direction_heading) {
-              direction_heading = state.heading_deg;
-              direction = heading_vector(direction_heading);
-            }
-            state.position += direction * ahead;
-          }
-        }
+        if (visitor.other) visitor.other(i, state);
         break;
     }
   }
+  return state;
 }
 
 Drawing interpret(const std::vector<Module>& modules, const TurtleOptions& options) {

@@ -57,19 +57,18 @@ struct TurtleVisitor {
   std::function<void(std::size_t index, const Vec2& from, const Vec2& to)> segment;
   /// A motif symbol at module `index` placed `motif` at `pose`, `size` drawing units per path unit.
   std::function<void(std::size_t index, const Path2d& motif, const TurtlePose& pose, double size)> motif;
-  /// Module `index` is a symbol the turtle does not act on; returns a distance (drawing units,
-  /// already scaled) the turtle then moves ahead without drawing, usually 0.
-  std::function<double(std::size_t index, const TurtlePose& pose)> other;
-  /// Module `index` is `[` seen at `pose`; returns where to go on: `index` enters the branch as
-  /// usual, a larger index skips to that module with the pose unchanged and nothing pushed
-  /// (for callers that already know what the branch draws).
-  std::function<std::size_t(std::size_t index, const TurtlePose& pose)> branch;
+  /// Module `index` is a symbol the turtle does not act on; may change `pose` (e.g. move the
+  /// turtle ahead without drawing, or put it where a known stretch of modules leaves it).
+  std::function<void(std::size_t index, TurtlePose& pose)> other;
+  /// Called before module `index` is acted on, with the pose then.
+  std::function<void(std::size_t index, const TurtlePose& pose)> before;
 };
 
 /// Walks `modules` from `start` with the rules above (options.heading_deg is not used; the
-/// start pose gives the heading) and reports to `visitor`. Throws like interpret().
-void walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
-                 const TurtleVisitor& visitor);
+/// start pose gives the heading), reports to `visitor` and returns the pose after the last
+/// module. Throws like interpret().
+TurtlePose walk_turtle(const std::vector<Module>& modules, const TurtleOptions& options, const TurtlePose& start,
+                       const TurtleVisitor& visitor);
 
 /// Interprets `modules` and returns the strokes in derivation order. Throws InputError when a
 /// `+`, `-` or `*` needs the default angle or scale and there is none, or a `]` has no `[`.

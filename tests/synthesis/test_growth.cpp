@@ -61,12 +61,12 @@ TEST_CASE("queries measure links, guide edges and elements as Table 2 says", "[g
   dg::SegmentGrid elements;
   elements.reset({-1, -1}, {11, 11}, 4, 0);
   elements.insert({{7, 1}, {7, 3}, 5});
-  dg::GuideEnvironment environment{&square, {{square[2], square[3], 4, 2}}, &elements};
+  dg::GuideEnvironment environment{&square, {{square[2], square[3], 4, 2}}, &elements, {}};
   dg::TurtlePose pose{{5, 2}, 0, 1};
   const dg::SeedStart seed;
 
   dg::Module distance{"?DL", {0.5}};
-  CHECK_FALSE(dg::answer_query(distance, pose, environment, seed));
+  CHECK(dg::answer_query(distance, pose, environment, seed).selected_link == std::optional<std::size_t>(4));
   REQUIRE(distance.parameters.size() == 5);
   CHECK(distance.parameters[0] == 3);           // found: a link
   CHECK(distance.parameters[1] == Approx(8));   // d: up to y = 10
@@ -88,7 +88,7 @@ TEST_CASE("queries measure links, guide edges and elements as Table 2 says", "[g
   CHECK(ahead.parameters[2] == 1);
 
   dg::Module blocked{"?X", {3, 9}};
-  CHECK_FALSE(dg::answer_query(blocked, pose, environment, seed));
+  CHECK_FALSE(dg::answer_query(blocked, pose, environment, seed).crossing);
   CHECK(blocked.parameters == std::vector<double>{1, 5, 3, 9});  // hits the element first
 
   dg::Module free_path{"?X", {1}};
@@ -97,7 +97,7 @@ TEST_CASE("queries measure links, guide edges and elements as Table 2 says", "[g
   CHECK(elements.size() == 2);  // the tested segment is now an element for later queries
 
   dg::Module crossing{"?X", {4, 7}};
-  const auto crossed = dg::answer_query(crossing, {{2, 8}, 90, 1}, environment, seed);
+  const auto crossed = dg::answer_query(crossing, {{2, 8}, 90, 1}, environment, seed).crossing;
   CHECK(crossing.parameters[0] == 3);
   REQUIRE(crossed);
   CHECK(crossed->links == std::vector<std::size_t>{4});
@@ -112,6 +112,11 @@ TEST_CASE("queries measure links, guide edges and elements as Table 2 says", "[g
   dg::Module any_link{"?DL", {}};
   dg::answer_query(any_link, pose, environment, seed);
   CHECK(any_link.parameters[3] == 9);  // unfiltered: link 9 at distance 5 beats link 4 at 8
+  environment.available = [](std::size_t link) { return link != 9; };  // link 9's tokens are taken
+  dg::Module hidden{"?DL", {}};
+  CHECK(dg::answer_query(hidden, pose, environment, seed).selected_link == std::optional<std::size_t>(4));
+  CHECK(hidden.parameters[3] == 4);
+  environment.available = nullptr;
   dg::Module only_four{"?NLI", {4}};
   dg::answer_query(only_four, {{5, 2}, 90, 1}, environment, seed);
   CHECK(only_four.parameters == std::vector<double>{3, 8, 4, 4});
