@@ -105,7 +105,7 @@ class Matcher {
     probe_cutoff_ = std::min(2.0 * tolerances_.tolerance, eps);
     sort_by_dihedral(exemplar_keypoints_);
     sort_by_dihedral(exemplar_samples_);
-    find_flat_disk(exemplar.mesh);
+    find_flat_disk();
   }
 
   double tolerance() const { return tolerances_.tolerance; }
@@ -116,13 +116,13 @@ class Matcher {
   SampleOutcome match(const SurfacePoint& y, const std::vector<Motion>& motions, const std::vector<std::size_t>& order,
                       bool search) const {
     SampleOutcome outcome;
-    std::vector<std::uint32_t> ball, scratch;
-    candidate_index_.gather(y.position, r_, ball);
+    std::vector<std::uint32_t> ball, part, scratch;
+    candidate_index_.gather_connected(y.position, y.normal, r_, tolerances_.tolerance, tolerances_.min_cos, ball, &part);
     const std::vector<std::uint32_t> probes = spread_probes(y.position, ball);
     for (std::size_t m : order) {
       const RigidTransform& t = motions[m].transform;
       if (!probes_touch(probes, t, tolerances_.tolerance, tolerances_.min_cos)) continue;
-      if (neighbourhoods_match(candidate_index_, exemplar_index_, y.position, ball, t, tolerances_, scratch)) {
+      if (neighbourhoods_match(candidate_index_, exemplar_index_, y, ball, t, tolerances_, scratch)) {
         outcome.similar = true;
         outcome.cached = static_cast<long>(m);
         return outcome;
@@ -142,21 +142,21 @@ class Matcher {
       ++attempts;
       const RigidTransform refined =
           refine_alignment(candidate_index_, exemplar_index_, y.position, ball, proposal, tolerances_);
-      if (!neighbourhoods_match(candidate_index_, exemplar_index_, y.position, ball, refined, tolerances_, scratch))
+      if (!neighbourhoods_match(candidate_index_, exemplar_index_, y, ball, refined, tolerances_, scratch))
         return false;
       outcome.similar = true;
       outcome.found = refined;
       return true;
     };
-    if (flat_disk_ && is_flat(y, ball)) {
+    if (flat_disk_ && is_flat(candidate_index_, y, ball)) {
       RigidTransform t;
       t.rotation = Eigen::Quaterniond::FromTwoVectors(y.normal, flat_disk_->normal).toRotationMatrix();
       t.translation = flat_disk_->position - t.rotation * y.position;
       if (attempt(t)) return outcome;
     }
     for (int round = 0; round < 2; ++round) {
-      if (try_anchors(y.position, candidate_keypoints_, exemplar_keypoints_, attempt)) return outcome;
-      if (try_anchors(y.position, candidate_samples_, exemplar_samples_, attempt)) return outcome;
+      if (try_anchors(y.position, part, candidate_keypoints_, exemplar_keypoints_, attempt)) return outcome;
+      if (try_anchors(y.position, part, candidate_samples_, exemplar_samples_, attempt)) return outcome;
       attempts = 0;
       budget = options_.max_loose_alignments;
       cutoff = probe_cutoff_;
@@ -189,13 +189,15 @@ class Matcher {
     return true;
   }
 
+  // Aligns the candidate anchors nearest to y on its neighbourhood (`part`: the triangles of its
+  // connected part) with compatible exemplar anchors.
   template <class Attempt>
-  bool try_anchors(const Vec3& y, const std::vector<Anchor>& near, const std::vector<Anchor>& far,
-                   Attempt& attempt) const {
+  bool try_anchors(const Vec3& y, const std::vector<std::uint32_t>& part, const std::vector<Anchor>& near,
+                   const std::vector<Anchor>& far, Attempt& attempt) const {
     std::vector<std::pair<double, std::size_t>> nearest;
     for (std::size_t i = 0; i < near.size(); ++i) {
       const double d = (near[i].position - y).norm();
-      if (d <= r_) nearest.emplace_back(d, i);
+      if (d <= r_ && candidate_index_.near_any_of(near[i].position, tolerances_.tolerance, part)) nearest.emplace_back(d, i);
     }
     std::sort(nearest.begin(), nearest.end());
     // Both tangent directions of one feature sample count as one anchor.
@@ -218,36 +220,29 @@ class Matcher {
     return false;
   }
 
-  bool is_flat(const SurfacePoint& y, const std::vector<std::uint32_t>& ball) const {
-    for (std::uint32_t i : ball) {
-      const SurfacePoint& p = candidate_index_.samples()[i];
-      if (std::abs((p.position - y.position).dot(y.normal)) > tolerances_.tolerance ||
-          p.normal.dot(y.normal) < tolerances_.min_cos)
-        return false;
-    }
-    return true;
+  // True when every sample of `ball` lies within the tolerance of y's tangent plane with a
+  // normal close to y's.
+  bool is_flat(const SurfaceIndex& index, const SurfacePoint& y, const std::vector<std::uint32_t>& ball) const {
+    return std::all_of(ball.begin(), ball.end(), [&](std::uint32_t i) {
+      const SurfacePoint& p = index.samples()[i];
+      return std::abs((p.position - y.position).dot(y.normal)) <= tolerances_.tolerance &&
+             p.normal.dot(y.normal) >= tolerances_.min_cos;
+    });
   }
 
-  // A point of the exemplar whose r-ball is one full flat disk (tried at the centroids of the
-  // largest triangles), for step 3.
-  void find_flat_disk(const TriangleMesh& mesh) {
-    std::vector<std::pair<double, std::uint32_t>> by_area;
-    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) by_area.emplace_back(-mesh.area_vector(t).norm(), t);
-    std::sort(by_area.begin(), by_area.end());
+  // A point of the exemplar whose intrinsic r-neighbourhood is one full flat disk, for step 3:
+  // tried at up to 1024 dense samples picked in a fixed pseudo-random order.
+  void find_flat_disk() {
+    const std::vector<SurfacePoint>& samples = exemplar_index_.samples();
     const double h = options_.spacing_r * r_;
     const double full_count = std::numbers::pi * r_ * r_ / (h * h);
     std::vector<std::uint32_t> ball;
-    for (std::size_t k = 0; k < std::min<std::size_t>(64, by_area.size()); ++k) {
-      const auto [a, b, c] = mesh.corners(by_area[k].second);
-      const SurfacePoint x{(a + b + c) / 3.0, mesh.area_vector(by_area[k].second).normalized()};
-      exemplar_index_.gather(x.position, r_, ball);
-      if (static_cast<double>(ball.size()) < 0.8 * full_count) continue;
-      const bool flat = std::all_of(ball.begin(), ball.end(), [&](std::uint32_t i) {
-        const SurfacePoint& q = exemplar_index_.samples()[i];
-        return std::abs((q.position - x.position).dot(x.normal)) <= tolerances_.tolerance &&
-               q.normal.dot(x.normal) >= tolerances_.min_cos;
-      });
-      if (flat) {
+    for (std::size_t k = 0; k < std::min<std::size_t>(1024, samples.size()); ++k) {
+      const SurfacePoint& x = samples[splitmix64(k) % samples.size()];
+      if (!exemplar_index_.gather_connected(x.position, x.normal, r_, tolerances_.tolerance, tolerances_.min_cos, ball) ||
+          static_cast<double>(ball.size()) < 0.8 * full_count)
+        continue;
+      if (is_flat(exemplar_index_, x, ball)) {
         flat_disk_ = x;
         return;
       }

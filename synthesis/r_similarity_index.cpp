@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <unordered_set>
 
 namespace dg {
 namespace {
@@ -62,6 +63,7 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
     : mesh_(mesh), cell_(gather_radius), triangle_cell_(2.0 * max_cutoff) {
   triangle_normals_.reserve(mesh.triangles.size());
   std::vector<SurfacePoint> points;
+  std::vector<std::uint32_t> triangles_of_points;
   const double inverse_cell_area = 1.0 / (spacing * spacing);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Vec3 area_vector = mesh.area_vector(t);
@@ -75,6 +77,7 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
     for (std::size_t i = 0; i < count; ++i) {
       const double s = std::sqrt(unit(state)), u = unit(state);
       points.push_back({(1.0 - s) * a + s * (1.0 - u) * b + s * u * c, normal});
+      triangles_of_points.push_back(static_cast<std::uint32_t>(t));
     }
   }
   std::vector<Key> keys(points.size());
@@ -83,9 +86,25 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return keys[i] < keys[j]; });
   samples_.reserve(points.size());
-  for (std::uint32_t i : order) samples_.push_back(points[i]);
+  sample_triangles_.reserve(points.size());
+  for (std::uint32_t i : order) {
+    samples_.push_back(points[i]);
+    sample_triangles_.push_back(triangles_of_points[i]);
+  }
   fill_ranges(order.size(), [&](std::size_t i) { return keys[order[i]]; }, buckets_);
   build_triangle_grid(max_cutoff);
+  build_vertex_triangles();
+}
+
+void SurfaceIndex::build_vertex_triangles() {
+  vertex_offsets_.assign(mesh_.positions.size() + 1, 0);
+  for (const Triangle& t : mesh_.triangles)
+    for (std::uint32_t v : t) ++vertex_offsets_[v + 1];
+  std::partial_sum(vertex_offsets_.begin(), vertex_offsets_.end(), vertex_offsets_.begin());
+  vertex_triangles_.resize(vertex_offsets_.back());
+  std::vector<std::uint32_t> filled(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
+  for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t)
+    for (std::uint32_t v : mesh_.triangles[t]) vertex_triangles_[filled[v]++] = t;
 }
 
 // Lists each triangle in every cell whose centre lies within max_cutoff + half the cell diagonal
@@ -166,6 +185,57 @@ void SurfaceIndex::gather(const Vec3& p, double radius, std::vector<std::uint32_
   std::sort(out.begin(), out.end());
 }
 
+bool SurfaceIndex::gather_connected(const Vec3& p, const Vec3& normal, double radius, double seed_cutoff, double min_cos,
+                                    std::vector<std::uint32_t>& out, std::vector<std::uint32_t>* part) const {
+  out.clear();
+  if (part) part->clear();
+  const std::optional<std::uint32_t> seed = closest_triangle(p, normal, seed_cutoff, min_cos);
+  if (!seed) return false;
+  const double radius2 = radius * radius;
+  auto inside = [&](std::uint32_t v) { return (mesh_.positions[v] - p).squaredNorm() <= radius2; };
+  auto segment_crosses = [&](std::uint32_t a, std::uint32_t b) {
+    const Vec3 pa = mesh_.positions[a], ab = mesh_.positions[b] - pa;
+    const double length2 = ab.squaredNorm();
+    const double s = length2 > 0.0 ? std::clamp((p - pa).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (pa + s * ab - p).squaredNorm() <= radius2;
+  };
+  // Flood over triangles: across a vertex inside the ball to every triangle around it, across
+  // an edge that crosses the ball (both ends outside) to the triangles sharing that edge.
+  std::vector<std::uint32_t> component{*seed};
+  std::unordered_set<std::uint32_t> reached{*seed};
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    const Triangle triangle = mesh_.triangles[component[i]];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = triangle[k], b = triangle[(k + 1) % 3];
+      const bool a_inside = inside(a);
+      if (!a_inside && (inside(b) || !segment_crosses(a, b))) continue;
+      for (std::uint32_t j = vertex_offsets_[a]; j < vertex_offsets_[a + 1]; ++j) {
+        const std::uint32_t u = vertex_triangles_[j];
+        const Triangle& other = mesh_.triangles[u];
+        const bool shares_edge = other[0] == b || other[1] == b || other[2] == b;
+        if ((a_inside || shares_edge) && reached.insert(u).second) component.push_back(u);
+      }
+    }
+  }
+  gather(p, radius, out);
+  out.erase(std::remove_if(out.begin(), out.end(), [&](std::uint32_t s) { return !reached.contains(sample_triangles_[s]); }),
+            out.end());
+  if (part) {
+    part->assign(component.begin(), component.end());
+    std::sort(part->begin(), part->end());
+  }
+  return true;
+}
+
+bool SurfaceIndex::near_any_of(const Vec3& q, double cutoff, const std::vector<std::uint32_t>& triangles) const {
+  const double cutoff2 = cutoff * cutoff;
+  return visit_triangles(q, [&](std::uint32_t t) {
+    if (!std::binary_search(triangles.begin(), triangles.end(), t)) return false;
+    const auto [a, b, c] = mesh_.corners(t);
+    return (closest_point_on_triangle(q, a, b, c) - q).squaredNorm() <= cutoff2;
+  });
+}
+
 template <class Visit>
 bool SurfaceIndex::visit_triangles(const Vec3& q, Visit&& visit) const {
   const auto found = triangle_buckets_.find(key(q, triangle_cell_));
@@ -185,16 +255,23 @@ bool SurfaceIndex::touches(const Vec3& q, const Vec3& normal, double tolerance, 
 }
 
 std::optional<SurfacePoint> SurfaceIndex::closest(const Vec3& q, const Vec3& normal, double cutoff, double min_cos) const {
-  std::optional<SurfacePoint> best;
+  const std::optional<std::uint32_t> t = closest_triangle(q, normal, cutoff, min_cos);
+  if (!t) return std::nullopt;
+  const auto [a, b, c] = mesh_.corners(*t);
+  return SurfacePoint{closest_point_on_triangle(q, a, b, c), triangle_normals_[*t]};
+}
+
+std::optional<std::uint32_t> SurfaceIndex::closest_triangle(const Vec3& q, const Vec3& normal, double cutoff,
+                                                            double min_cos) const {
+  std::optional<std::uint32_t> best;
   double best2 = cutoff * cutoff;
   visit_triangles(q, [&](std::uint32_t t) {
     if (triangle_normals_[t].dot(normal) < min_cos) return false;
     const auto [a, b, c] = mesh_.corners(t);
-    const Vec3 point = closest_point_on_triangle(q, a, b, c);
-    const double d2 = (point - q).squaredNorm();
+    const double d2 = (closest_point_on_triangle(q, a, b, c) - q).squaredNorm();
     if (d2 <= best2) {
       best2 = d2;
-      best = SurfacePoint{point, triangle_normals_[t]};
+      best = t;
     }
     return false;
   });

@@ -6,7 +6,7 @@
 
 namespace dg {
 
-bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exemplar, const Vec3& y,
+bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exemplar, const SurfacePoint& y,
                           std::span<const std::uint32_t> ball, const RigidTransform& t, const MatchTolerances& tolerances,
                           std::vector<std::uint32_t>& scratch) {
   if (ball.empty()) return false;
@@ -16,7 +16,9 @@ bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exe
       return false;
   }
   const RigidTransform back = t.inverse();
-  exemplar.gather(t.apply(y), tolerances.r, scratch);
+  if (!exemplar.gather_connected(t.apply(y.position), t.apply_direction(y.normal), tolerances.r, tolerances.tolerance,
+                                 tolerances.min_cos, scratch))
+    return false;
   for (std::uint32_t i : scratch) {
     const SurfacePoint& q = exemplar.samples()[i];
     if (!candidate.touches(back.apply(q.position), back.apply_direction(q.normal), tolerances.tolerance,

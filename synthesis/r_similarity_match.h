@@ -21,11 +21,12 @@ struct MatchTolerances {
   int icp_iterations = 10;
 };
 
-/// True when the neighbourhoods match under t: every candidate sample of `ball` (the dense
-/// candidate samples within r of y) mapped by t touches the exemplar, and every exemplar sample
-/// within r of t(y) mapped back by t^-1 touches the candidate (distance and normal tolerances).
-/// `scratch` is reused storage.
-bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exemplar, const Vec3& y,
+/// True when the neighbourhoods match under t: every candidate sample of `ball` (y's intrinsic
+/// r-neighbourhood, SurfaceIndex::gather_connected) mapped by t touches the exemplar, and every
+/// sample of the exemplar's intrinsic r-neighbourhood of t(y) mapped back by t^-1 touches the
+/// candidate (distance and normal tolerances); false when no exemplar triangle lies within the
+/// tolerance of t(y). `scratch` is reused storage.
+bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exemplar, const SurfacePoint& y,
                           std::span<const std::uint32_t> ball, const RigidTransform& t, const MatchTolerances& tolerances,
                           std::vector<std::uint32_t>& scratch);
 

@@ -8,8 +8,6 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -25,7 +23,11 @@ void add_verify_command(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "verify", "Check a generated model against its exemplar: closed, no self-intersections, r-similar");
+      "verify",
+      "Check a generated model against its exemplar: closed, no self-intersections, r-similar (a point's "
+      "r-neighbourhood is the surface inside the r-ball that is connected to the point within the ball, an "
+      "intrinsic neighbourhood as in Bokeloh et al. 2010 sec. 3.1; it must match the exemplar's under a rigid "
+      "motion, both ways)");
   command->add_option("EXEMPLAR", options->exemplar, "The exemplar model file")->required();
   command->add_option("CANDIDATE", options->candidate, "The model to check")->required();
   command->add_option("-r,--radius", options->verify.r,
@@ -43,22 +45,14 @@ void add_verify_command(CLI::App& app) {
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->add_flag("--json", options->json, "Print machine-readable results on stdout");
   command->callback([options] {
-    bool pass = false;
-    {
-      const auto threads = limit_threads(options->threads);
-      const VerifyReport report =
-          verify_models(options->exemplar, options->candidate, options->verify, stderr_progress(options->quiet));
-      if (options->json)
-        fmt::print("{}\n", to_json(report).dump(2));
-      else
-        fmt::print("{}", to_text(report));
-      pass = report.pass;
-    }
-    // main() maps every CLI11 error to status 2, so a failed check (status 1) exits here.
-    if (!pass) {
-      std::fflush(stdout);
-      std::exit(1);
-    }
+    const auto threads = limit_threads(options->threads);
+    const VerifyReport report =
+        verify_models(options->exemplar, options->candidate, options->verify, stderr_progress(options->quiet));
+    if (options->json)
+      fmt::print("{}\n", to_json(report).dump(2));
+    else
+      fmt::print("{}", to_text(report));
+    if (!report.pass) throw CLI::RuntimeError(1);  // status 1: a check failed
   });
 }
 
