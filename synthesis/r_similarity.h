@@ -3,7 +3,9 @@
 // whose r-neighbourhood matches an r-neighbourhood of the exemplar under a rigid motion.
 //
 // Method. Both surfaces get dense area-uniform samples (spacing `spacing_r` * r) with normals;
-// the r-neighbourhood of a point is the set of dense samples in the Euclidean ball of radius r.
+// the r-neighbourhood of a point is intrinsic, as in the paper: the dense samples on the part of
+// the surface inside the Euclidean ball of radius r that is connected to the point within the
+// ball (so a close but separate part, e.g. a stake beside a post, is not in it).
 // A motion T (candidate -> exemplar) matches at y when every candidate sample of the ball
 // around y, mapped by T, lies within `tolerance` of an exemplar triangle whose normal agrees
 // within `normal_tolerance_degrees`, and every exemplar sample of the ball around T(y), mapped
@@ -13,7 +15,8 @@
 //  2. frame-to-frame alignments of the candidate's feature-line ends (keypoints) near y with
 //     every exemplar keypoint of the same kind and dihedral angle, then of feature-line samples
 //     near y (both tangent directions) with compatible exemplar feature samples;
-//  3. for a flat ball, the alignment with a flat full disk of the exemplar.
+//  3. for a flat ball, the alignment with a flat full disk of the exemplar (found among up to
+//     1024 exemplar dense samples).
 // Proposals of steps 2 and 3 must first bring 8 spread-out samples of the ball, then all of it,
 // within the tolerance of the exemplar (exact frames: corners, straight edges, flat disks); then
 // point-to-plane ICP refines them before the test (at most `max_alignments` per test point).
