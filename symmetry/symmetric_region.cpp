@@ -7,7 +7,7 @@
 namespace dg {
 
 CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options)
-    : surface_(surface), unoriented_(cloud != nullptr),
+    : surface_(surface),
       cos_tolerance_(std::cos((cloud ? options.cloud_angle_tolerance_degrees : options.angle_tolerance_degrees) *
                               std::numbers::pi / 180.0)),
       offset_tolerance_((cloud ? options.cloud_offset_tolerance_eps : options.offset_tolerance_eps) * surface.eps()) {}
@@ -85,8 +85,7 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
     const Vec3 normal = t.apply_direction(plane.normal);
     const bool found = image.any([&](std::uint32_t other) {
       for (const CellPlane& candidate : surface_.planes(other)) {
-        const double cos_angle = candidate.normal.dot(normal);
-        if ((unoriented_ ? std::abs(cos_angle) : cos_angle) > cos_tolerance_ &&
+        if (std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
             std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
           return true;
       }

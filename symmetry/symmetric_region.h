@@ -15,7 +15,7 @@ namespace dg {
 struct RegionOptions {
   double angle_tolerance_degrees = 1.0;  ///< mapped planes/lines must agree in direction within this
   double offset_tolerance_eps = 0.1;     ///< ... and in position within this many eps
-  /// Point clouds compare fitted cell planes and creases (unoriented), with these tolerances.
+  /// Point clouds compare fitted cell planes and creases, with these tolerances.
   double cloud_angle_tolerance_degrees = 3.0;
   double cloud_offset_tolerance_eps = 0.25;
 };
@@ -28,7 +28,8 @@ std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p);
 class CellMatcher {
  public:
   /// `cloud` is the point cloud the surface was built from, or null for meshes (it selects the
-  /// cloud tolerances and plane normals compared up to sign).
+  /// cloud tolerances). Plane normals are compared up to sign: a face with flipped orientation,
+  /// or a back-to-back duplicate of it, lies on the same surface (common damage in real assets).
   CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options = {});
 
   /// True when every plane and line of `cell`, mapped by `t`, lies on geometry near the image
@@ -44,7 +45,6 @@ class CellMatcher {
 
  private:
   const VoxelSurface& surface_;
-  bool unoriented_;
   double cos_tolerance_, offset_tolerance_;
 };
 

@@ -118,6 +118,31 @@ TEST_CASE("facade and messy facade: two independent translations (column and row
   }
 }
 
+TEST_CASE("back-to-back duplicated faces keep their symmetry", "[symmetry]") {
+  // Messy assets double faces with the opposite orientation (the messy facade does it to a few
+  // windows); the column translation must cover the same area when every face of the facade's
+  // first column has such a twin.
+  auto column_cells = [](const dg::TriangleMesh& mesh) {
+    dg::Model model;
+    model.mesh = mesh;
+    const Detected d = detect_model(std::move(model));
+    for (const auto& s : d.result.symmetries)
+      if (s.kind == "translation" && ((s.transform.translation - Vec3(3, 0, 0)).norm() < 1e-6 ||
+                                      (s.transform.translation + Vec3(3, 0, 0)).norm() < 1e-6))
+        return static_cast<double>(s.region.r_symmetric_cells.size());  // the doubled area counts twice
+    return 0.0;
+  };
+  const dg::TriangleMesh clean = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
+  dg::TriangleMesh doubled = clean;
+  for (const auto& t : clean.triangles)
+    if ((clean.positions[t[0]] + clean.positions[t[1]] + clean.positions[t[2]]).x() / 3 < 4.0)
+      doubled.triangles.push_back({t[0], t[2], t[1]});
+  REQUIRE(doubled.triangles.size() > clean.triangles.size() + 100);
+  const double clean_cells = column_cells(clean);
+  REQUIRE(clean_cells > 0.0);
+  CHECK(column_cells(doubled) == Approx(clean_cells).epsilon(0.01));
+}
+
 TEST_CASE("a smooth sphere has no symmetry candidates, and says why", "[symmetry]") {
   dg::Model model;
   model.mesh = dg::test::make_sphere(Vec3::Zero(), 1.0, 24, 48);
