@@ -42,15 +42,19 @@ Vec3 vec3_field(const nlohmann::json& object, const char* key, const std::string
   return Vec3(v[0], v[1], v[2]);
 }
 
-RigidTransform matrix_field(const nlohmann::json& object, const char* key, const std::string& where) {
-  const auto rows = field<std::vector<std::vector<double>>>(object, key, where);
+// `what` names the value in the error message.
+RigidTransform rigid_from_rows(const std::vector<std::vector<double>>& rows, const std::string& what) {
   Mat4 m = Mat4::Identity();
-  if (rows.size() != 4) throw InputError(where + ": field \"" + key + "\" must be a 4x4 matrix");
+  if (rows.size() != 4) throw InputError(what + " must be a 4x4 matrix");
   for (int r = 0; r < 4; ++r) {
-    if (rows[r].size() != 4) throw InputError(where + ": field \"" + key + "\" must be a 4x4 matrix");
+    if (rows[r].size() != 4) throw InputError(what + " must be a 4x4 matrix");
     for (int c = 0; c < 4; ++c) m(r, c) = rows[r][c];
   }
   return rigid_from_matrix(m);
+}
+
+RigidTransform matrix_field(const nlohmann::json& object, const char* key, const std::string& where) {
+  return rigid_from_rows(field<std::vector<std::vector<double>>>(object, key, where), where + ": field \"" + key + "\"");
 }
 
 nlohmann::json seam_json(const SeamSurface& seam) {
@@ -140,9 +144,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                             {"pitch", d.pitch},
                             {"cut", d.cut},
                             {"count", d.count}});
-      RigidTransform shift;
-      shift.translation = d.translation;
-      transforms.push_back(matrix_json(shift.matrix()));
+      transforms.push_back(matrix_json(d.motion.matrix()));
       counts.push_back(d.count);
     }
     nlohmann::json pieces = nlohmann::json::array();
@@ -281,6 +283,17 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
       direction.cut = field<double>(d, "cut", where);
       direction.count = field<int>(d, "count", where);
       entry.rule.directions.push_back(direction);
+    }
+    // The generators: a translation by `translation`, or a screw whose slide is `translation`.
+    const auto transforms = field<std::vector<std::vector<std::vector<double>>>>(grid, "transforms", where);
+    if (transforms.size() != entry.rule.directions.size())
+      throw InputError(where + ": grid " + entry.rule.name + " needs one transform per direction");
+    for (std::size_t i = 0; i < transforms.size(); ++i) {
+      GridDirection& direction = entry.rule.directions[i];
+      const std::string what = fmt::format("{}: grid {} transform {}", where, entry.rule.name, i + 1);
+      direction.motion = rigid_from_rows(transforms[i], what);
+      if (std::abs(direction.motion.translation.dot(direction.direction) - direction.pitch) > 1e-6 * direction.pitch)
+        throw InputError(what + " does not move by the pitch along its direction");
     }
     for (const nlohmann::json& p : field<nlohmann::json>(grid, "pieces", where)) {
       GridPiece piece;

@@ -68,12 +68,15 @@ class SlabCells {
   std::vector<std::size_t> asymmetric_before_;
 };
 
-// The best chain of cut planes for one translation: the longest run of planes, each crossing
-// only r-symmetric cells (and the last only images of them), whose slabs are symmetric.
+// The best chain of cut planes for one translation or screw motion: the longest run of planes,
+// each crossing only r-symmetric cells (and the last only images of them), whose slabs are
+// symmetric. A screw moves every plane across its axis by its slide along the axis, so its
+// planes are those perpendicular to the axis, `slide` apart.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
                                             std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry) {
   const VoxelSurface& surface = prepared.surface;
-  const Vec3 t = symmetry.transform.translation;
+  const ScrewParameters screw = screw_parameters(symmetry.transform);
+  const Vec3 t = symmetry.kind == "translation" ? symmetry.transform.translation : screw.slide * screw.axis;
   const double pitch = t.norm();
   if (pitch <= 0.0) return std::nullopt;
   const Vec3 d = t / pitch;
@@ -83,9 +86,12 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   for (std::uint32_t c : symmetry.region.r_symmetric_cells) in_r[c] = 1;
   for (std::uint32_t c : symmetry.region.symmetric_cells) in_xi[c] = 1;
   const CellMatcher matcher(surface, nullptr);
-  for (std::uint32_t c : symmetry.region.r_symmetric_cells) {
-    const std::int64_t image = matcher.image_cell(c, symmetry.transform);
-    if (image >= 0) in_image[static_cast<std::size_t>(image)] = 1;
+  // A cell lies in the image when its preimage does lie in the r-symmetric region (pulled back,
+  // so a rotation's rounding to voxels leaves no holes in the image).
+  const RigidTransform inverse = symmetry.transform.inverse();
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+    const std::int64_t preimage = matcher.image_cell(c, inverse);
+    if (preimage >= 0 && in_r[static_cast<std::size_t>(preimage)]) in_image[c] = 1;
   }
   Blocked forward, backward;
   SlabCells slab_cells;
@@ -142,7 +148,9 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
                           (count == best->count && (clearance > best_clearance + 1e-12 ||
                                                     (clearance > best_clearance - 1e-12 && vertices > best_vertices)));
       if (better) {
-        best = GridDirection{t, d, pitch, first, count, symmetry_index};
+        // A translation's generator is kept exact (no rotation noise from the detector's fit).
+        const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
+        best = GridDirection{motion, t, d, pitch, first, count, symmetry_index};
         best_clearance = clearance;
         best_vertices = vertices;
       }
@@ -179,34 +187,51 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
                                  const GridOptions& options) {
   std::vector<GridRule> grids;
   if (prepared.model.is_point_cloud()) return grids;
-  std::vector<GridDirection> directions;
+  std::vector<GridDirection> translations, screws;
   for (const SymmetryFamily& family : symmetries.families) {
-    if (family.kind != "translation") continue;
+    if (family.kind != "translation" && family.kind != "screw") continue;
     // The generator is the family member with power 1.
     for (std::size_t m = 0; m < family.members.size(); ++m) {
       if (family.powers[m] != 1) continue;
       const auto direction =
           grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
                          options.max_slab_asymmetry);
-      if (direction) directions.push_back(*direction);
+      if (direction) (family.kind == "translation" ? translations : screws).push_back(*direction);
     }
   }
-  // Most units first; then combine independent directions into one grid.
+  // Most units first; then combine independent translations into one grid.
   // Ties keep a readable order: directions closest to x, then y, then z.
   auto axis_of = [](const GridDirection& d) {
     Eigen::Index axis = 0;
     d.direction.cwiseAbs().maxCoeff(&axis);
     return axis;
   };
-  std::stable_sort(directions.begin(), directions.end(), [&](const GridDirection& a, const GridDirection& b) {
+  auto more_units = [&](const GridDirection& a, const GridDirection& b) {
     return a.count != b.count ? a.count > b.count : axis_of(a) < axis_of(b);
-  });
-  GridRule grid;
-  grid.name = "grid1";
-  grid.max_count = options.max_count;
-  for (const GridDirection& direction : directions)
+  };
+  std::stable_sort(translations.begin(), translations.end(), more_units);
+  std::stable_sort(screws.begin(), screws.end(), more_units);
+  auto next_grid = [&]() {
+    GridRule grid;
+    grid.name = "grid" + std::to_string(grids.size() + 1);
+    grid.max_count = options.max_count;
+    return grid;
+  };
+  GridRule grid = next_grid();
+  for (const GridDirection& direction : translations)
     if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions)) grid.directions.push_back(direction);
   if (!grid.directions.empty()) grids.push_back(std::move(grid));
+  // A screw commutes only with motions along its own axis, so each screw is a 1-grid of its own;
+  // screws along the same axis (powers of one another, one screw found twice, or an axis the
+  // translation grid already cuts across) give no further grid.
+  std::vector<GridDirection> chosen_screws = grids.empty() ? std::vector<GridDirection>{} : grids[0].directions;
+  for (const GridDirection& direction : screws) {
+    if (!independent_of(direction.translation, chosen_screws)) continue;
+    chosen_screws.push_back(direction);
+    GridRule screw_grid = next_grid();
+    screw_grid.directions.push_back(direction);
+    grids.push_back(std::move(screw_grid));
+  }
   return grids;
 }
 

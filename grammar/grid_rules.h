@@ -1,7 +1,9 @@
 #pragma once
-// Grid rules (paper 001 §3.4.3) for translational repetitions: a k-grid cuts the model by k
-// families of parallel planes into corner, border and interior pieces; resizing places the
-// head piece of a direction once, the repeated unit N times and the tail piece once.
+// Grid rules (paper 001 §3.4.3) for translational repetitions and screw motions: a k-grid cuts
+// the model by k families of parallel planes into corner, border and interior pieces; resizing
+// places the head piece of a direction once, the repeated unit N times and the tail piece once.
+// A screw (spiral stairs) cuts along planes perpendicular to its axis, its slide apart, and
+// forms a 1-grid of its own (it commutes only with motions along its axis).
 //
 // A direction d with generator translation t (pitch p = |t|) has cut planes d . x = cut + j p,
 // j = 0 .. count. Each plane crosses only r-symmetric area, so every seam of a resized model
@@ -10,6 +12,7 @@
 // GridOptions::max_slab_asymmetry), so count copies of the first slab reproduce the exemplar.
 
 #include "geometry/mesh.h"
+#include "geometry/rigid_transform.h"
 #include "geometry/prepared_model.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -20,7 +23,8 @@ namespace dg {
 
 /// One direction of a grid.
 struct GridDirection {
-  Vec3 translation = Vec3::Zero();  ///< generator t, model units
+  RigidTransform motion;            ///< generator: unit k + 1 = motion(unit k)
+  Vec3 translation = Vec3::Zero();  ///< its translation t, or a screw's slide along its axis, model units
   Vec3 direction = Vec3::UnitX();   ///< t / |t|
   double pitch = 0.0;               ///< |t|
   double cut = 0.0;                 ///< offset of the first cut plane along direction
@@ -45,9 +49,10 @@ struct GridOptions {
   double max_slab_asymmetry = 0.03;
 };
 
-/// Finds translational grids from the detected symmetry families. Independent directions are
-/// combined into one k-grid (their cut planes are each valid over the whole model, and
-/// translations commute); directions that are sums of chosen ones are dropped.
+/// Finds grids from the detected symmetry families. Independent translations are combined into
+/// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
+/// commute); directions that are sums of chosen ones are dropped. Each screw axis gives a
+/// further 1-grid. Rotations (no slide) give none.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options = {});
 

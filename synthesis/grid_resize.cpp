@@ -8,24 +8,30 @@
 namespace dg {
 namespace {
 
-// Offsets of the copies of `piece` (model units): per direction, the origin for a head piece,
-// k times the translation (k = 0 .. count-1) for a unit piece, the shift of the tail for a tail
-// piece; the copies are all combinations.
-std::vector<Vec3> piece_offsets(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
-  std::vector<Vec3> offsets{Vec3::Zero()};
+// Placements of the copies of `piece`: per direction, the identity for a head piece, the k-th
+// power of the generator (k = 0 .. count-1) for a unit piece, the power count - exemplar count
+// for a tail piece; the copies are all combinations (the generators of a grid commute).
+std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
+  std::vector<RigidTransform> placements{RigidTransform{}};
   for (std::size_t i = 0; i < grid.directions.size(); ++i) {
     const GridDirection& d = grid.directions[i];
-    std::vector<Vec3> along;
-    if (piece.classes[i] == 0) along.push_back(Vec3::Zero());
+    auto power = [&](int k) {
+      const RigidTransform step = k >= 0 ? d.motion : d.motion.inverse();
+      RigidTransform result;
+      for (int j = 0; j < std::abs(k); ++j) result = step.after(result);
+      return result;
+    };
+    std::vector<RigidTransform> along;
+    if (piece.classes[i] == 0) along.push_back(RigidTransform{});
     if (piece.classes[i] == 1)
-      for (int k = 0; k < counts[i]; ++k) along.push_back(static_cast<double>(k) * d.translation);
-    if (piece.classes[i] == 2) along.push_back(static_cast<double>(counts[i] - d.count) * d.translation);
-    std::vector<Vec3> combined;
-    for (const Vec3& a : offsets)
-      for (const Vec3& b : along) combined.push_back(a + b);
-    offsets = std::move(combined);
+      for (int k = 0; k < counts[i]; ++k) along.push_back(power(k));
+    if (piece.classes[i] == 2) along.push_back(power(counts[i] - d.count));
+    std::vector<RigidTransform> combined;
+    for (const RigidTransform& a : placements)
+      for (const RigidTransform& b : along) combined.push_back(b.after(a));
+    placements = std::move(combined);
   }
-  return offsets;
+  return placements;
 }
 
 }  // namespace
@@ -39,12 +45,12 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
     if (counts[i] < grid.min_count || counts[i] > grid.max_count)
       throw InputError(fmt::format("grid {}: count {} is outside the allowed range {}..{}", grid.name, counts[i],
                                    grid.min_count, grid.max_count));
-  std::vector<std::vector<Vec3>> offsets;
+  std::vector<std::vector<RigidTransform>> placements;
   std::size_t vertices = 0, triangles = 0;
   for (const GridPiece& piece : pieces) {
-    offsets.push_back(piece_offsets(grid, piece, counts));
-    vertices += offsets.back().size() * piece.mesh.positions.size();
-    triangles += offsets.back().size() * piece.mesh.triangles.size();
+    placements.push_back(piece_placements(grid, piece, counts));
+    vertices += placements.back().size() * piece.mesh.positions.size();
+    triangles += placements.back().size() * piece.mesh.triangles.size();
   }
   TriangleMesh result;
   result.positions.reserve(vertices);
@@ -54,9 +60,9 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   for (std::size_t p = 0; p < pieces.size(); ++p) {
     const TriangleMesh& mesh = pieces[p].mesh;
     const std::vector<char> open = open_edge_vertices(mesh);
-    for (const Vec3& offset : offsets[p]) {
+    for (const RigidTransform& placement : placements[p]) {
       const auto base = static_cast<std::uint32_t>(result.positions.size());
-      for (const Vec3& position : mesh.positions) result.positions.push_back(position + offset);
+      for (const Vec3& position : mesh.positions) result.positions.push_back(placement.apply(position));
       for (const Triangle& t : mesh.triangles) result.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
       seam_vertices.insert(seam_vertices.end(), open.begin(), open.end());
     }

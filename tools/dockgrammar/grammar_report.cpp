@@ -15,8 +15,13 @@ namespace dg::cli {
 namespace {
 
 constexpr const char* kMissing =
-    "grids of rotations and screw motions are not built; docking sites that slide along themselves, or whose docker "
+    "grids of pure rotations (no slide along the axis) are not built; docking sites that slide along themselves, or whose docker "
     "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
+
+// A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
+std::string grid_motion_text(const GridDirection& d) {
+  return describe_motion(d.motion, d.motion.angle() > 1e-9 ? "screw" : "translation");
+}
 
 std::string counts_text(const GridRule& grid) {
   std::string text;
@@ -123,8 +128,8 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
     for (const GridDirection& d : grid.rule.directions)
-      out += fmt::format("  direction t = {}, pitch {:.6g}, {} units, first cut at {:.6g}\n", vec(d.translation), d.pitch,
-                         d.count, d.cut);
+      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} units, first cut at {:.6g}\n", grid_motion_text(d),
+                         vec(d.direction), d.pitch, d.count, d.cut);
   }
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
@@ -146,12 +151,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
     nlohmann::json counts = nlohmann::json::array(), transforms = nlohmann::json::array(), pieces = nlohmann::json::array();
     for (const GridDirection& d : grid.rule.directions) {
       counts.push_back(d.count);
-      RigidTransform t;
-      t.translation = d.translation;
-      const Mat4 m = t.matrix();
-      nlohmann::json rows = nlohmann::json::array();
-      for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
-      transforms.push_back(rows);
+      transforms.push_back(matrix_json(d.motion));
     }
     for (const GridPiece& p : grid.pieces) pieces.push_back({{"name", piece_name(p.classes)}, {"triangles", p.mesh.triangles.size()}});
     grids.push_back({{"name", grid.rule.name},
@@ -188,13 +188,13 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
   md += "```\n\n## Grid rules\n\n";
-  if (report.grammar.grids.empty()) md += "No grid found (no translational repetition with at least two units whose cut planes cross only r-symmetric area).\n\n";
+  if (report.grammar.grids.empty()) md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric area).\n\n";
   for (const GridWithPieces& grid : report.grammar.grids) {
-    md += fmt::format("### {} ({}-grid, counts {})\n\n| direction | translation | pitch | units | first cut |\n|---|---|---|---|---|\n",
+    md += fmt::format("### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut |\n|---|---|---|---|---|\n",
                       grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
-      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} |\n", i + 1, vec(d.translation), d.pitch, d.count, d.cut);
+      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} |\n", i + 1, grid_motion_text(d), d.pitch, d.count, d.cut);
     }
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
     for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());

@@ -23,6 +23,8 @@ std::string vec(const Vec3& v) {
   return fmt::format("({:.5g}, {:.5g}, {:.5g})", clean(v.x()), clean(v.y()), clean(v.z()));
 }
 
+}  // namespace
+
 std::string describe_motion(const RigidTransform& t, const std::string& kind) {
   if (kind == "translation") return fmt::format("t = {}, |t| = {:.6g}", vec(t.translation), t.translation.norm());
   const ScrewParameters screw = screw_parameters(t);
@@ -37,8 +39,6 @@ nlohmann::json matrix_json(const RigidTransform& t) {
   for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
   return rows;
 }
-
-}  // namespace
 
 std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
   if (result.symmetries.empty()) return fmt::format("no symmetries found: {}\n", result.note);

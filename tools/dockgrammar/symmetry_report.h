@@ -11,6 +11,13 @@
 
 namespace dg::cli {
 
+/// "t = (x, y, z), |t| = ..." for a translation; angle (degrees), axis and axis point for a
+/// rotation, plus the rise along the axis for a screw (`kind` as in DetectedSymmetry).
+std::string describe_motion(const RigidTransform& t, const std::string& kind);
+
+/// A rigid motion as a 4x4 row-major matrix (rows of four numbers), model units.
+nlohmann::json matrix_json(const RigidTransform& t);
+
 /// Readable table of the first `top` symmetries (kind, motion, areas, family).
 std::string symmetry_table(const SymmetryResult& result, std::size_t top);
 
