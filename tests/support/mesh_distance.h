@@ -9,7 +9,7 @@ namespace dg::test {
 double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Largest distance from the vertices and triangle centroids of `from` to the surface of `to`
-/// (brute force; meant for meshes of a few thousand triangles).
+/// (exact, with the triangles of `to` in a uniform grid); infinity when `to` has no triangle.
 double one_sided_distance(const TriangleMesh& from, const TriangleMesh& to);
 
 /// max(one_sided_distance(a, b), one_sided_distance(b, a)).
