@@ -30,23 +30,6 @@ SeamContact contact_of(const ContextFreeGrammar& g, const ShapeProduction& p, co
   };
 }
 
-// Flags the vertices of a piece that lie on an edge used by only one of its triangles.
-std::vector<char> open_vertices(const TriangleMesh& mesh) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  edges.reserve(3 * mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
-  std::vector<char> open(mesh.positions.size(), 0);
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i == 1) open[edges[i].first] = open[edges[i].second] = 1;
-    i = j;
-  }
-  return open;
-}
-
 }  // namespace
 
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
@@ -67,7 +50,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
   auto place = [&](std::size_t index, const RigidTransform& world, int depth, const TriangleMesh& piece) {
     const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
     collisions.add(piece);
-    if (!open_known[index]) open_of[index] = open_vertices(p.terminal), open_known[index] = 1;
+    if (!open_known[index]) open_of[index] = open_edge_vertices(p.terminal), open_known[index] = 1;
     seam_vertices.insert(seam_vertices.end(), open_of[index].begin(), open_of[index].end());
     append_mesh(result.mesh, piece);
     if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
