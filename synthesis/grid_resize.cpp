@@ -24,7 +24,7 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
     std::vector<RigidTransform> along;
     if (piece.classes[i] == 0) along.push_back(RigidTransform{});
     if (piece.classes[i] == 1)
-      for (int k = 0; k < counts[i]; ++k) along.push_back(power(k));
+      for (int k = 0; k < counts[i]; ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
     if (piece.classes[i] == 2) along.push_back(power(counts[i] - d.count));
     std::vector<RigidTransform> combined;
     for (const RigidTransform& a : placements)

@@ -69,6 +69,42 @@ TEST_CASE("resize facade(3 x 4) to 5 x 7 gives the generator's facade(5, 7)", "[
   check_same_shape(resized, dg::assets::make_asset("facade", {{"columns", 5}, {"rows", 7}}).mesh, g.eps);
 }
 
+// A screw grid (spiral stairs): every added unit is the screw motion applied once more.
+TEST_CASE("resize spiral stairs(12) to 16 steps gives the generator's stairs(16)", "[synthesis][grid]") {
+  const Grammar g = grammar_of("spiral_stairs", {{"steps", 12}});
+  REQUIRE(g.grid.directions.size() == 1);
+  REQUIRE(g.grid.directions[0].count == 12);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {12}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 12}}).mesh,
+                   g.eps);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {16}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 16}}).mesh,
+                   g.eps);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {7}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 7}}).mesh,
+                   g.eps);
+}
+
+TEST_CASE("a screw grid survives the grammar file", "[synthesis][grid]") {
+  const Grammar g = grammar_of("spiral_stairs", {{"steps", 12}});
+  REQUIRE(g.grid.directions.size() == 1);
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-screw-grid";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  dg::ShapeGrammar file;
+  file.source_name = "spiral_stairs_12";
+  file.r = 4 * g.eps;
+  file.eps = g.eps;
+  file.exemplar = dg::assets::make_asset("spiral_stairs", {{"steps", 12}}).mesh;
+  file.grids.push_back({g.grid, g.pieces});
+  dg::write_grammar(folder / "stairs.grammar.json", file);
+  const dg::ShapeGrammar read = dg::read_grammar(folder / "stairs.grammar.json");
+  REQUIRE(read.grids.size() == 1);
+  const dg::GridDirection& d = read.grids[0].rule.directions[0];
+  CHECK(d.motion.rotation.isApprox(g.grid.directions[0].motion.rotation, 1e-9));
+  CHECK(d.motion.translation.isApprox(g.grid.directions[0].motion.translation, 1e-9));
+  check_same_shape(dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {14}, 1e-6 * g.eps),
+                   dg::assets::make_asset("spiral_stairs", {{"steps", 14}}).mesh, g.eps);
+  std::filesystem::remove_all(folder);
+}
+
 TEST_CASE("resize rejects counts out of range and a wrong number of counts", "[synthesis][grid]") {
   const Grammar g = grammar_of("fence", {{"n", 4}});
   CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {-1}, 1e-9), dg::InputError);
