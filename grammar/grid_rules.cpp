@@ -1,5 +1,6 @@
 #include "grammar/grid_rules.h"
 
+#include "grammar/asymmetric_spans.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
 #include "symmetry/symmetric_region.h"
@@ -93,16 +94,29 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     const std::int64_t preimage = matcher.image_cell(c, inverse);
     if (preimage >= 0 && in_r[static_cast<std::size_t>(preimage)]) in_image[c] = 1;
   }
-  Blocked forward, backward;
+  // The first plane may also cross symmetric cells near asymmetric ones (damage such as a fin)
+  // when all that asymmetry lies on one side of it: the r-neighbourhoods of the seams between
+  // copied units then occur in the exemplar, at the first plane (asymmetry above it: the head's
+  // top is a copy of the unit's top) or at the second (asymmetry below: the second unit's bottom
+  // is a copy of the first's).
+  const std::vector<PositionSpan> spans = asymmetric_spans(surface, in_xi, d, surface.r());
+  Blocked forward, backward, first_plane;
   SlabCells slab_cells;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
     const double s = d.dot(surface.centre(c));
     if (!in_r[c]) forward.add(s - half, s + half);
     if (!in_image[c]) backward.add(s - half, s + half);
+    if (!in_xi[c]) {
+      first_plane.add(s - half, s + half);
+    } else if (!in_r[c] && !spans[c].empty()) {
+      const double lo = std::max(s - half, spans[c].lo - half), hi = std::min(s + half, spans[c].hi + half);
+      if (lo <= hi) first_plane.add(lo, hi);
+    }
     slab_cells.add(s, in_xi[c] != 0);
   }
   forward.finish();
   backward.finish();
+  first_plane.finish();
   slab_cells.finish();
 
   // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
@@ -127,8 +141,11 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   for (const auto& [phase, vertices] : phases) {
     // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
     for (double first = lowest + phase; first <= highest; first += pitch) {
-      if (forward.contains(first) || (first - pitch >= lowest && !forward.contains(first - pitch))) continue;  // not a run start
-      int count = 0;
+      // Not a run start: blocked, or the run from the plane before includes this one.
+      if (first_plane.contains(first) ||
+          (first - pitch >= lowest && !first_plane.contains(first - pitch) && !forward.contains(first)))
+        continue;
+      int count = 1;
       while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
       // The plane after the last unit must lie in the image of the r-symmetric area.
       while (count > 0 && backward.contains(first + count * pitch)) --count;
@@ -142,7 +159,8 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       }
       if (count < min_repeats) continue;
       double clearance = wanted_clearance;
-      for (int k = 0; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
+      clearance = std::min(clearance, first_plane.clearance(first));
+      for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
       clearance = std::min(clearance, backward.clearance(first + count * pitch));
       const bool better = !best || count > best->count ||
                           (count == best->count && (clearance > best_clearance + 1e-12 ||

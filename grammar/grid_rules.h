@@ -6,7 +6,8 @@
 // forms a 1-grid of its own (it commutes only with motions along its axis).
 //
 // A direction d with generator translation t (pitch p = |t|) has cut planes d . x = cut + j p,
-// j = 0 .. count. Each plane crosses only r-symmetric area, so every seam of a resized model
+// j = 0 .. count. Each plane crosses only r-symmetric area (the first may also cross symmetric
+// area whose nearby asymmetry lies all on one side of it), so every seam of a resized model
 // looks locally like a seam of the exemplar (r-similarity), and the `count` slabs between the
 // planes are copies of each other (symmetric under t up to a little damage, see
 // GridOptions::max_slab_asymmetry), so count copies of the first slab reproduce the exemplar.
