@@ -1,5 +1,6 @@
 #include "grammar/context_free.h"
 
+#include "geometry/fragment_merge.h"
 #include "geometry/submesh.h"
 #include "geometry/zone_cut.h"
 #include "grammar/cell_sets.h"
@@ -12,9 +13,11 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 namespace dg {
 namespace {
@@ -184,6 +187,7 @@ class Builder {
     cut_model();
     cut_pieces();
     check_fit();
+    join_fragments();
     count_sites(stats);
     build_tree();
     ContextFreeGrammar grammar;
@@ -405,6 +409,33 @@ class Builder {
     }
   }
 
+  // The cuts split triangles along whole voxel planes; fragments of one exemplar triangle that
+  // lie in the same kept dockers are joined and re-triangulated, so pieces only gain triangles
+  // along their seams.
+  void join_fragments() {
+    std::vector<std::vector<std::uint32_t>> holders(cut_.triangles.size());  // kept nodes holding each triangle
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      if (!nodes_[i].kept) nodes_[i].piece.clear();
+      for (std::uint32_t t : nodes_[i].piece) holders[t].push_back(static_cast<std::uint32_t>(i));
+    }
+    std::map<std::vector<std::uint32_t>, std::uint32_t> ids;
+    std::vector<std::uint32_t> label(cut_.triangles.size());
+    for (std::size_t t = 0; t < label.size(); ++t)
+      label[t] = ids.emplace(holders[t], static_cast<std::uint32_t>(ids.size())).first->second;
+    std::vector<char> corners(cut_.positions.size(), 0);
+    std::fill(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(mesh_.positions.size()), 1);
+    MergedFragments merged = merge_fragments(cut_, origin_, label, corners);
+    std::vector<std::uint32_t> origin(merged.mesh.triangles.size());
+    for (Node& n : nodes_) n.piece.clear();
+    for (std::uint32_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+      const std::uint32_t from = merged.representative[t];
+      origin[t] = origin_[from];
+      for (std::uint32_t i : holders[from]) nodes_[i].piece.push_back(t);
+    }
+    cut_ = std::move(merged.mesh);
+    origin_ = std::move(origin);
+  }
+
   void count_sites(ContextFreeStats& stats) const {
     for (const Relation& rel : relations_) {
       if (nodes_[rel.from].kept && nodes_[rel.to].kept)
@@ -465,12 +496,33 @@ class Builder {
     }
     for (std::size_t c : children)
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 1;
-    std::vector<std::size_t> triangles;
-    for (std::uint32_t t : own)
-      if (!taken_[t]) triangles.push_back(t);
+    // The remaining triangles, renumbered, re-triangulated with only the vertices that the
+    // exemplar's corners and the terminal's own border need.
+    TriangleMesh part;
+    std::vector<std::uint32_t> origin;
+    std::vector<char> corners;
+    std::unordered_map<std::uint32_t, std::uint32_t> renumbered;
+    for (std::uint32_t t : own) {
+      if (taken_[t]) continue;
+      Triangle tri;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = cut_.triangles[t][k];
+        const auto [at, added] = renumbered.emplace(v, static_cast<std::uint32_t>(part.positions.size()));
+        if (added) {
+          part.positions.push_back(cut_.positions[v]);
+          corners.push_back(v < mesh_.positions.size() ? 1 : 0);
+        }
+        tri[k] = at->second;
+      }
+      part.triangles.push_back(tri);
+      origin.push_back(origin_[t]);
+    }
     for (std::size_t c : children)
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
-    return submesh(cut_, triangles);
+    TriangleMesh merged = merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners).mesh;
+    std::vector<std::size_t> all(merged.triangles.size());
+    std::iota(all.begin(), all.end(), 0);
+    return submesh(merged, all);  // drops the vertices the merge left unused
   }
 
   // The production of `node` (kNone: the axiom) with the given children; children must have

@@ -1,0 +1,173 @@
+#include "geometry/fragment_merge.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numeric>
+#include <unordered_map>
+
+namespace dg {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>;  // mesh vertex
+using FaceInfo = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;                 // nesting level, -1 = unknown
+using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, FaceInfo>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
+                                                       CGAL::Exact_predicates_tag>;
+
+std::uint64_t key_of(std::uint32_t a, std::uint32_t b) {
+  const auto [lo, hi] = std::minmax(a, b);
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Nesting level of every face: 0 outside, +1 across each constrained edge.
+void mark_nesting(Cdt& cdt) {
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  std::deque<std::pair<Cdt::Face_handle, int>> seeds{{cdt.infinite_face(), 0}};
+  while (!seeds.empty()) {
+    const auto [seed, level] = seeds.front();
+    seeds.pop_front();
+    if (seed->info() != -1) continue;
+    std::deque<Cdt::Face_handle> queue{seed};
+    seed->info() = level;
+    while (!queue.empty()) {
+      const Cdt::Face_handle f = queue.front();
+      queue.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Face_handle n = f->neighbor(i);
+        if (n->info() != -1) continue;
+        if (cdt.is_constrained({f, i})) {
+          seeds.push_back({n, level + 1});
+        } else {
+          n->info() = level;
+          queue.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+double area_of(const std::vector<Vec3>& positions, const Triangle& t) {
+  return 0.5 * (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
+}
+
+// Re-triangulates one region (triangles of `mesh`) keeping the flagged vertices of its border;
+// false (nothing added) when the result would not cover the region exactly.
+bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& region, const std::vector<char>& interior_edge,
+                   const std::vector<char>& kept, std::vector<Triangle>& out) {
+  const std::vector<Vec3>& positions = mesh.positions;
+  Vec3 normal = Vec3::Zero();
+  double area = 0.0;
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> next;  // border: vertex -> following vertices
+  for (std::uint32_t t : region) {
+    const Triangle& tri = mesh.triangles[t];
+    normal += (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+    area += area_of(positions, tri);
+    for (int k = 0; k < 3; ++k)
+      if (!interior_edge[3 * static_cast<std::size_t>(t) + k]) next[tri[k]].push_back(tri[(k + 1) % 3]);
+  }
+  if (!(normal.norm() > 0.0)) return false;
+  normal.normalize();
+  const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
+  Cdt cdt;
+  std::unordered_map<std::uint32_t, Cdt::Vertex_handle> handle;
+  std::vector<std::uint32_t> starts;
+  for (const auto& [v, following] : next)
+    if (kept[v]) starts.push_back(v);
+  std::sort(starts.begin(), starts.end());  // insertion order fixed: same result every run
+  for (std::uint32_t v : starts) {
+    const Vec3& p = positions[v];
+    const std::size_t before = cdt.number_of_vertices();
+    const Cdt::Vertex_handle h = cdt.insert(Kernel::Point_2(p.dot(u), p.dot(w)));
+    if (cdt.number_of_vertices() == before) return false;  // two border vertices at one spot
+    h->info() = v;
+    handle.emplace(v, h);
+  }
+  std::size_t steps = 0, border_edges = 0;
+  for (const auto& [v, following] : next) border_edges += following.size();
+  for (std::uint32_t v : starts)
+    for (std::uint32_t to : next[v]) {
+      while (!kept[to]) {  // a vertex only on a straight border: walk on to the next kept one
+        const auto found = next.find(to);
+        if (found == next.end() || found->second.size() != 1 || ++steps > border_edges) return false;
+        to = found->second.front();
+      }
+      cdt.insert_constraint(handle.at(v), handle.at(to));
+      if (cdt.number_of_vertices() != starts.size()) return false;  // constraints crossed
+    }
+  mark_nesting(cdt);
+  std::vector<Triangle> triangles;
+  double covered = 0.0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info() % 2 == 0) continue;
+    Triangle t;
+    for (int k = 0; k < 3; ++k) t[k] = f->vertex(k)->info();
+    covered += area_of(positions, t);
+    triangles.push_back(t);
+  }
+  if (std::abs(covered - area) > 1e-9 * area) return false;
+  out.insert(out.end(), triangles.begin(), triangles.end());
+  return true;
+}
+
+}  // namespace
+
+MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
+                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned) {
+  const auto triangle_count = static_cast<std::uint32_t>(mesh.triangles.size());
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t+k
+  uses.reserve(3 * static_cast<std::size_t>(triangle_count));
+  for (std::uint32_t t = 0; t < triangle_count; ++t)
+    for (std::uint32_t k = 0; k < 3; ++k) uses.push_back({key_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), 3 * t + k});
+  std::sort(uses.begin(), uses.end());
+  std::vector<char> kept = pinned, interior_edge(uses.size(), 0);
+  std::vector<std::uint32_t> parent(triangle_count);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    const std::uint32_t a = uses[i].second / 3, b = uses[j - 1].second / 3;
+    if (j - i != 2 || label[a] != label[b]) {
+      kept[static_cast<std::uint32_t>(uses[i].first >> 32)] = 1;
+      kept[static_cast<std::uint32_t>(uses[i].first & 0xffffffffu)] = 1;
+    } else if (origin[a] == origin[b]) {
+      interior_edge[uses[i].second] = interior_edge[uses[i + 1].second] = 1;
+      parent[find_root(parent, a)] = find_root(parent, b);
+    }
+    i = j;
+  }
+  std::vector<std::vector<std::uint32_t>> regions;
+  std::vector<std::uint32_t> region_of(triangle_count, std::numeric_limits<std::uint32_t>::max());
+  for (std::uint32_t t = 0; t < triangle_count; ++t) {
+    std::uint32_t& r = region_of[find_root(parent, t)];
+    if (r == std::numeric_limits<std::uint32_t>::max()) r = static_cast<std::uint32_t>(regions.size()), regions.emplace_back();
+    regions[r].push_back(t);
+  }
+  MergedFragments merged;
+  merged.mesh.positions = mesh.positions;
+  std::vector<Triangle> triangles;
+  for (const std::vector<std::uint32_t>& region : regions) {
+    triangles.clear();
+    if (region.size() == 1 || !retriangulate(mesh, region, interior_edge, kept, triangles)) {
+      triangles.clear();
+      for (std::uint32_t t : region) triangles.push_back(mesh.triangles[t]);
+    }
+    merged.mesh.triangles.insert(merged.mesh.triangles.end(), triangles.begin(), triangles.end());
+    merged.representative.insert(merged.representative.end(), triangles.size(), region.front());
+  }
+  return merged;
+}
+
+}  // namespace dg

@@ -1,0 +1,32 @@
+#pragma once
+// Undoing needless splits: a triangle cut into many fragments (e.g. along voxel planes) is
+// re-triangulated with as few triangles as its labelled regions allow. Fragments of one input
+// triangle that carry the same label and touch along an edge form a region; each region is
+// re-triangulated (constrained Delaunay) keeping only the vertices that corners, label borders
+// and open edges need, so the mesh stays conforming and the labelled borders stay edges.
+
+#include "geometry/mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace dg {
+
+/// The result of merge_fragments: the new triangles and, per new triangle, one input triangle
+/// of the region it lies in (its origin and label are the new triangle's).
+struct MergedFragments {
+  TriangleMesh mesh;  ///< same positions as the input (unused ones stay)
+  std::vector<std::uint32_t> representative;
+};
+
+/// Re-triangulates the regions of `mesh` (fragments with equal `origin` and equal `label`,
+/// one of each per triangle, joined across edges used by exactly two triangles). Vertices
+/// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
+/// kept; others only where an edge between different labels, or an edge not used by exactly
+/// two triangles, ends.
+/// A region whose re-triangulation does not reproduce its area (within 1e-9 relative) keeps its
+/// fragments. Deterministic.
+MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
+                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned);
+
+}  // namespace dg
