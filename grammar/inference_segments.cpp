@@ -1,6 +1,7 @@
 #include "grammar/inference_segments.h"
 
 #include "grammar/compaction.h"
+#include "grammar/d0l_chain.h"
 #include "grammar/expression.h"
 #include "grammar/lsystem_text.h"
 #include "grammar/turtle_string.h"
@@ -28,6 +29,25 @@ std::string rounded_text(double value, int decimals) {
 }
 
 using Root = std::pair<std::size_t, bool>;  // segment, reversed
+
+// A compacted grammar in text form: axiom, rules `predecessor -> successor`, drawing symbols.
+struct FoundGrammar {
+  std::string axiom;
+  std::vector<std::pair<std::string, std::string>> rules;
+  std::string draw;  // `draw:` setting, empty for F alone
+  int iterations = 0;
+  std::size_t length = 0;
+};
+
+// The shortest of the single-rule compaction and, for unbranched strings, the two-letter chain.
+FoundGrammar compact(const std::string& text, std::size_t max_block) {
+  const CompactGrammar single = compact_turtle_string(text, max_block);
+  FoundGrammar found{single.axiom, {}, "", single.iterations, single.length};
+  if (single.iterations > 0) found.rules.emplace_back("F", single.successor);
+  if (const auto chain = recover_chain_grammar(text); chain && chain->length < found.length)
+    found = FoundGrammar{chain->axiom, {{"F", chain->f_successor}, {"G", chain->g_successor}}, "F G", chain->iterations, chain->length};
+  return found;
+}
 
 // Where a drawing may start: segments whose start no other segment reaches (directed), or
 // segments with a free end (undirected); of those, the first in input order and the extreme
@@ -108,7 +128,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   tree_options.join_tolerance = options.join_fraction * diagonal;
 
   struct Best {
-    CompactGrammar grammar;
+    FoundGrammar grammar;
     TurtleParameters parameters;
     TurtleString string;
     Vec2 start;
@@ -124,7 +144,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
       if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)
         return;
-      CompactGrammar grammar = compact_turtle_string(string.text, options.max_block);
+      FoundGrammar grammar = compact(string.text, options.max_block);
       // Shorter first; equal lengths: the start lowest, then leftmost (independent of input order).
       const Vec2 start = tree.nodes.front().start;
       const auto key = [](std::size_t length, const Vec2& p) {
@@ -152,7 +172,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   result.method = "instance tree";
   result.elements = segments.size();
   result.terminals = 1;
-  result.rules = best->grammar.iterations > 0 ? 1 : 0;
+  result.rules = best->grammar.iterations > 0 ? best->grammar.rules.size() : 0;
   std::ostringstream text;
   text << "# inferred from " << segments.size() << " segments: instance tree and repeated-block compaction (Guo et al. 2020)\n";
   text << "axiom: " << best->grammar.axiom << "\n";
@@ -160,9 +180,10 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   if (best->parameters.scale) text << "scale: " << rounded_text(*best->parameters.scale, 4) << "\n";
   text << "step: " << rounded_text(best->string.step, 4) << "\n";
   if (rounded_text(best->string.heading_deg, 2) != "0") text << "heading: " << rounded_text(best->string.heading_deg, 2) << "\n";
+  if (!best->grammar.draw.empty()) text << "draw: " << best->grammar.draw << "\n";
   if (best->grammar.iterations > 0) {
     text << "iterations: " << best->grammar.iterations << "\n";
-    text << "F -> " << best->grammar.successor << "\n";
+    for (const auto& [predecessor, successor] : best->grammar.rules) text << predecessor << " -> " << successor << "\n";
   }
   result.text = text.str();
   result.lsystem = parse_lsystem_text(result.text, "inferred L-system");

@@ -113,27 +113,10 @@ void check_targets(const std::string& id, const Figures& f) {
   if (f.scale_error >= 0) CHECK(f.scale_error < 0.05);
 }
 
-// Segment cases of string mode whose SVG meets every target through the instance tree.
-const std::vector<std::string> svg_tree_cases = {"plant_124a_d25.7_n5",         "plant_124b_d35_n4",
-                                                 "plant_124c_d22.5_n4",         "koch_snowflake_n4",
-                                                 "koch_quadratic_island_n3",    "shuffled_koch_snowflake_n3",
-                                                 "guo_124a_scaled_d30_r1.5_n4", "noise_plant_124a_d25.7_n4_j2"};
 // PNG cases that meet every target.
 const std::vector<std::string> png_cases = {"shuffled_koch_snowflake_n3"};
 
 }  // namespace
-
-TEST_CASE("instance tree: string-mode corpus cases re-derive with the ground truth's grammar length", "[pixel][grammar][corpus]") {
-  if (dg::test::lsystem_corpus_cases().empty()) {
-    WARN("corpus absent: " << dg::test::lsystem_corpus_dir().string());
-    return;
-  }
-  for (const std::string& id : svg_tree_cases) {
-    const Figures f = measure_svg(id);
-    CHECK(f.method == "instance tree");
-    check_targets(id, f);
-  }
-}
 
 TEST_CASE("pixel inference: PNG corpus cases that meet the targets", "[pixel][grammar][corpus]") {
   if (dg::test::lsystem_corpus_cases().empty()) {

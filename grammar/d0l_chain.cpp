@@ -1,0 +1,133 @@
+#include "grammar/d0l_chain.h"
+
+#include <cstdlib>
+#include <vector>
+
+namespace dg {
+
+namespace {
+
+// A block: the letters it writes (0 = F, 1 = G), the turns between them and before / after it.
+struct Block {
+  std::vector<int> letters;
+  std::vector<int> inner;  // turn before letters[1..]
+  int lead = 0, trail = 0;
+};
+
+// One level of a chain: letters and the net turn before each (turns[0]: before the first).
+struct Level {
+  std::vector<int> letters;
+  std::vector<int> turns;
+};
+
+std::string turn_text(int steps) { return std::string(static_cast<std::size_t>(std::abs(steps)), steps > 0 ? '+' : '-'); }
+
+std::string block_text(const Block& b) {
+  std::string s = turn_text(b.lead);
+  for (std::size_t k = 0; k < b.letters.size(); ++k) {
+    if (k > 0) s += turn_text(b.inner[k - 1]);
+    s += b.letters[k] == 0 ? 'F' : 'G';
+  }
+  return s + turn_text(b.trail);
+}
+
+std::string level_text(const Level& level) {
+  std::string s;
+  for (std::size_t k = 0; k < level.letters.size(); ++k) s += turn_text(level.turns[k]) + (level.letters[k] == 0 ? 'F' : 'G');
+  return s;
+}
+
+std::size_t grammar_length_of(const std::string& axiom, const std::string& f, const std::string& g) {
+  bool plus = false, minus = false;
+  for (const std::string* s : {&axiom, &f, &g})
+    for (char c : *s) plus |= c == '+', minus |= c == '-';
+  return axiom.size() + f.size() + g.size() + 2 + (plus ? 1 : 0) + (minus ? 1 : 0);
+}
+
+// The coarser level whose letters, rewritten by the blocks (`blocks[letter]`) and joined with
+// their turns, give `level`; `labelled`: the letters of `level` must match the blocks' letters
+// (otherwise only the inner turns decide, as on the drawing itself where F and G look alike).
+std::optional<Level> coarsen(const Level& level, const Block blocks[2], std::size_t r, bool labelled) {
+  if (level.letters.size() % r != 0 || level.letters.size() < r) return std::nullopt;
+  Level out;
+  const std::size_t groups = level.letters.size() / r;
+  out.letters.reserve(groups);
+  out.turns.reserve(groups);
+  for (std::size_t g = 0; g < groups; ++g) {
+    int match = -1;
+    for (int b = 0; b < 2 && match < 0; ++b) {
+      bool same = true;
+      for (std::size_t k = 0; k < r && same; ++k) {
+        if (labelled && level.letters[g * r + k] != blocks[b].letters[k]) same = false;
+        if (k > 0 && level.turns[g * r + k] != blocks[b].inner[k - 1]) same = false;
+      }
+      if (same) match = b;
+    }
+    if (match < 0) return std::nullopt;
+    const int before = g == 0 ? 0 : blocks[out.letters.back()].trail;
+    out.turns.push_back(level.turns[g * r] - before - blocks[match].lead);
+    out.letters.push_back(match);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<ChainGrammar> recover_chain_grammar(const std::string& text, int max_block_letters, int max_edge_turns) {
+  Level drawn;
+  int turn = 0;
+  for (char c : text) {
+    if (c == '+') ++turn;
+    else if (c == '-') --turn;
+    else if (c == 'F') drawn.letters.push_back(0), drawn.turns.push_back(turn), turn = 0;
+    else return std::nullopt;
+  }
+  std::optional<ChainGrammar> best;
+  const std::size_t n = drawn.letters.size();
+  for (std::size_t r = 2; r <= static_cast<std::size_t>(max_block_letters); ++r) {
+    if (n % r != 0 || n < 2 * r) continue;
+    // The two inner-turn patterns of the drawn groups.
+    std::vector<std::vector<int>> patterns;
+    for (std::size_t g = 0; g < n / r && patterns.size() <= 2; ++g) {
+      const std::vector<int> inner(drawn.turns.begin() + static_cast<long>(g * r + 1), drawn.turns.begin() + static_cast<long>(g * r + r));
+      bool known = false;
+      for (const auto& p : patterns) known |= p == inner;
+      if (!known) patterns.push_back(inner);
+    }
+    if (patterns.size() != 2) continue;
+    Block blocks[2];
+    for (int b = 0; b < 2; ++b) blocks[b].inner = patterns[static_cast<std::size_t>(b)], blocks[b].letters.assign(r, 0);
+    const int span = 2 * max_edge_turns + 1;
+    for (int edges = 0; edges < span * span * span * span; ++edges) {
+      int e = edges;
+      for (Block& b : blocks) {
+        b.lead = e % span - max_edge_turns, e /= span;
+        b.trail = e % span - max_edge_turns, e /= span;
+      }
+      const std::optional<Level> first = coarsen(drawn, blocks, r, false);
+      if (!first) continue;
+      for (unsigned labels = 0; labels < (1u << (2 * r)); ++labels) {
+        for (std::size_t k = 0; k < r; ++k) {
+          blocks[0].letters[k] = static_cast<int>((labels >> k) & 1u);
+          blocks[1].letters[k] = static_cast<int>((labels >> (r + k)) & 1u);
+        }
+        const std::string f = block_text(blocks[0]), g = block_text(blocks[1]);
+        Level level = *first;
+        for (int iterations = 1;; ++iterations) {
+          // The axiom holds at least one symbol per letter: skip building it when that is too long.
+          if (!best || level.letters.size() + f.size() + g.size() + 2 < best->length) {
+            const std::string axiom = level_text(level);
+            const std::size_t length = grammar_length_of(axiom, f, g);
+            if (!best || length < best->length) best = ChainGrammar{axiom, f, g, iterations, length};
+          }
+          std::optional<Level> coarser = coarsen(level, blocks, r, true);
+          if (!coarser) break;
+          level = std::move(*coarser);
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace dg

@@ -1,0 +1,92 @@
+// Two-letter D0L recovery on unbranched turtle strings: systems derived here by the engine
+// (grammar/derivation.h), written as the drawing shows them (every letter an `F`, turns summed),
+// must come back as a system that derives the same string and is no longer than the original;
+// and the whole segment path on a dragon curve drawn here.
+
+#include "tests/grammar/inference_measure.h"
+
+#include "grammar/d0l_chain.h"
+#include "grammar/derivation.h"
+#include "grammar/grammar_length.h"
+#include "grammar/inference_segments.h"
+#include "grammar/lsystem_text.h"
+#include "synthesis/turtle.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+// The derived string as a drawing shows it: drawing symbols as F, runs of turns by their sum.
+std::string drawn_string(const dg::LSystem& system) {
+  const std::vector<std::string>& draw = system.turtle.draw_symbols;
+  std::string out;
+  int turn = 0;
+  for (const dg::Module& m : dg::derive(system).modules) {
+    if (m.symbol == "+") ++turn;
+    else if (m.symbol == "-") --turn;
+    else if (std::find(draw.begin(), draw.end(), m.symbol) != draw.end()) {
+      out += std::string(static_cast<std::size_t>(std::abs(turn)), turn > 0 ? '+' : '-') + "F";
+      turn = 0;
+    }
+  }
+  return out;
+}
+
+dg::LSystem chain_system(const dg::ChainGrammar& g) {
+  return dg::parse_lsystem_text("axiom: " + g.axiom + "\ndraw: F G\niterations: " + std::to_string(g.iterations) +
+                                    "\nF -> " + g.f_successor + "\nG -> " + g.g_successor + "\n",
+                                "recovered");
+}
+
+}  // namespace
+
+TEST_CASE("d0l chain: two-letter systems come back from their drawn strings", "[grammar][inference]") {
+  // The dragon as in the corpus's source (L, R both draw; turns before and after letters), the
+  // dragon's two-symbol form, and a system with three letters per block.
+  for (const std::string text : {"axiom: L\ndraw: L R\niterations: 8\nL -> L+R+\nR -> -L-R\n",
+                                 "axiom: F\ndraw: F G\niterations: 9\nF -> F+G\nG -> F-G\n",
+                                 "axiom: F\ndraw: F G\niterations: 5\nF -> F+G-F\nG -> G--F+G\n"}) {
+    const dg::LSystem truth = dg::parse_lsystem_text(text, "truth");
+    const std::string drawn = drawn_string(truth);
+    const auto recovered = dg::recover_chain_grammar(drawn);
+    INFO(text);
+    REQUIRE(recovered);
+    INFO(recovered->axiom << " | F -> " << recovered->f_successor << " | G -> " << recovered->g_successor << " | n "
+                          << recovered->iterations);
+    CHECK(drawn_string(chain_system(*recovered)) == drawn);
+    CHECK(recovered->length <= dg::grammar_length(truth));
+    CHECK(recovered->length == dg::grammar_length(chain_system(*recovered)));
+  }
+  // A single pattern of inner turns is a one-rule system, not this one; branches are not chains.
+  CHECK_FALSE(dg::recover_chain_grammar("F+F-F+F-F+F-F+F"));
+  CHECK_FALSE(dg::recover_chain_grammar("F[+F]F[-F]F"));
+}
+
+TEST_CASE("d0l chain: a dragon curve drawn here is inferred from its segments", "[grammar][inference]") {
+  const std::string text = "axiom: L\nangle: 90\nstep: 7\nheading: 30\ndraw: L R\niterations: 9\nL -> L+R+\nR -> -L-R\n";
+  const dg::LSystem truth = dg::parse_lsystem_text(text, "truth");
+  const dg::Drawing drawing = dg::interpret(dg::derive(truth).modules, dg::turtle_options(truth.turtle));
+  std::vector<dg::TreeSegment> segments;
+  dg::SvgDrawing svg;
+  for (const dg::Stroke& stroke : drawing.strokes) {
+    const auto lines = dg::flatten_path(stroke.path, 1.0);
+    const dg::Vec2 a = lines.front().front(), b = lines.front().back();
+    segments.push_back({a, b});
+    svg.elements.push_back({"path", 0, {{dg::Vec2(a.x(), -a.y()), dg::Vec2(b.x(), -b.y())}}});
+  }
+  REQUIRE(segments.size() == 512);
+  const auto inferred = dg::infer_segment_lsystem(segments, true);
+  REQUIRE(inferred);
+  INFO(inferred->text);
+  CHECK(inferred->lsystem.productions.size() == 2);
+  CHECK(dg::grammar_length(inferred->lsystem) <= dg::grammar_length(truth));
+  CHECK(*inferred->lsystem.turtle.angle_deg == Approx(90).margin(0.01));
+  const double diagonal = dg::test::diagonal_of(dg::test::drawing_points(svg, 1.0));
+  const auto input = dg::test::drawing_points(svg, diagonal / 2000);
+  const auto output = dg::test::rederived_points(*inferred, diagonal / 2000);
+  CHECK(dg::test::symmetric_hausdorff(input, output, diagonal / 100) < 1e-6 * diagonal);
+}
