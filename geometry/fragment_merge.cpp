@@ -7,6 +7,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <numeric>
@@ -125,7 +126,8 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
 }  // namespace
 
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
-                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned) {
+                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
+                                bool straighten_open_borders) {
   const auto triangle_count = static_cast<std::uint32_t>(mesh.triangles.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t+k
   uses.reserve(3 * static_cast<std::size_t>(triangle_count));
@@ -135,18 +137,35 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   std::vector<char> kept = pinned, interior_edge(uses.size(), 0);
   std::vector<std::uint32_t> parent(triangle_count);
   std::iota(parent.begin(), parent.end(), 0u);
+  // Vertices on open edges that may go: two open edges in a straight line, nothing else but
+  // joined edges around (the vertex's other end of each open edge is recorded).
+  std::vector<std::array<std::uint32_t, 2>> open_ends(straighten_open_borders ? mesh.positions.size() : 0);
+  std::vector<std::uint8_t> open_count(open_ends.size(), 0);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].first == uses[i].first) ++j;
     const std::uint32_t a = uses[i].second / 3, b = uses[j - 1].second / 3;
-    if (j - i != 2 || label[a] != label[b]) {
-      kept[static_cast<std::uint32_t>(uses[i].first >> 32)] = 1;
-      kept[static_cast<std::uint32_t>(uses[i].first & 0xffffffffu)] = 1;
-    } else if (origin[a] == origin[b]) {
+    const auto lo = static_cast<std::uint32_t>(uses[i].first >> 32), hi = static_cast<std::uint32_t>(uses[i].first & 0xffffffffu);
+    if (j - i == 1 && straighten_open_borders) {
+      for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
+        if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
+        else kept[v] = 1;
+    } else if (j - i != 2 || label[a] != label[b] || (straighten_open_borders && origin[a] != origin[b])) {
+      kept[lo] = kept[hi] = 1;
+    }
+    if (j - i == 2 && label[a] == label[b] && origin[a] == origin[b]) {
       interior_edge[uses[i].second] = interior_edge[uses[i + 1].second] = 1;
       parent[find_root(parent, a)] = find_root(parent, b);
     }
     i = j;
+  }
+  for (std::size_t v = 0; v < open_ends.size(); ++v) {
+    if (kept[v] || open_count[v] == 0) continue;
+    const Vec3 &p = mesh.positions[v], &a = mesh.positions[open_ends[v][0]], &b = mesh.positions[open_ends[v][1]];
+    const double length = (b - a).norm();
+    // Kept unless it lies on the segment between its two open neighbours (1e-9 of its length).
+    kept[v] = open_count[v] != 2 || !(length > 0.0) || (b - a).cross(p - a).norm() > 1e-9 * length * length ||
+              (p - a).dot(b - a) <= 0.0 || (p - b).dot(a - b) <= 0.0;
   }
   std::vector<std::vector<std::uint32_t>> regions;
   std::vector<std::uint32_t> region_of(triangle_count, std::numeric_limits<std::uint32_t>::max());

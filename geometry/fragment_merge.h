@@ -23,10 +23,13 @@ struct MergedFragments {
 /// one of each per triangle, joined across edges used by exactly two triangles). Vertices
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
 /// kept; others only where an edge between different labels, or an edge not used by exactly
-/// two triangles, ends.
+/// two triangles, ends. With `straighten_open_borders`, a vertex inside one input triangle
+/// where two open edges meet in a straight line goes too (the border keeps its shape; a mesh
+/// welded to it later must close the T-junctions, see resolve_t_junctions).
 /// A region whose re-triangulation does not reproduce its area (within 1e-9 relative) keeps its
 /// fragments. Deterministic.
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
-                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned);
+                                const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
+                                bool straighten_open_borders = false);
 
 }  // namespace dg
