@@ -173,17 +173,18 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
     for (std::size_t i = 0; i < cf.productions.size(); ++i)
       productions.push_back(production_json(cf, cf.productions[i], folder, fmt::format("production_{}.ply", i + 1)));
   }
-  const nlohmann::json document = {{"format", "dockgrammar-grammar"},
-                                   {"version", kGrammarFileVersion},
-                                   {"units", "model units of the source file"},
-                                   {"source", {{"name", grammar.source_name}, {"hash_fnv1a64", grammar.source_hash}}},
-                                   {"r", grammar.r},
-                                   {"eps", grammar.eps},
-                                   {"exemplar", folder_name + "/exemplar.ply"},
-                                   {"grids", grids},
-                                   {"nonterminals", nonterminals},
-                                   {"axiom", axiom},
-                                   {"productions", productions}};
+  nlohmann::json document = {{"format", "dockgrammar-grammar"},
+                             {"version", kGrammarFileVersion},
+                             {"units", "model units of the source file"},
+                             {"source", {{"name", grammar.source_name}, {"hash_fnv1a64", grammar.source_hash}}},
+                             {"r", grammar.r},
+                             {"eps", grammar.eps},
+                             {"exemplar", folder_name + "/exemplar.ply"},
+                             {"grids", grids},
+                             {"nonterminals", nonterminals},
+                             {"axiom", axiom},
+                             {"productions", productions}};
+  if (!grammar.up_axis.empty()) document["up"] = grammar.up_axis;
   write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << '\n'; }, false);
 }
 
@@ -258,6 +259,11 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
   grammar.source_hash = field<std::string>(source, "hash_fnv1a64", where);
   grammar.r = field<double>(document, "r", where);
   grammar.eps = field<double>(document, "eps", where);
+  if (document.contains("up")) {
+    grammar.up_axis = field<std::string>(document, "up", where);
+    if (grammar.up_axis != "x" && grammar.up_axis != "y" && grammar.up_axis != "z")
+      throw InputError(where + ": \"up\" must be \"x\", \"y\" or \"z\"");
+  }
   auto load = [&](const std::string& relative) {
     const std::filesystem::path file = path.parent_path() / relative;
     if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar mesh " + file.string() + " is missing");

@@ -26,6 +26,9 @@ struct ShapeGrammar {
   std::string source_name;    ///< file name of the exemplar
   std::string source_hash;    ///< FNV-1a 64-bit hash of the exemplar file's bytes, hex
   double r = 0.0, eps = 0.0;  ///< model units
+  /// The exemplar's up axis for pictures, "x", "y" or "z" as given to `analyze --up`; empty
+  /// when not given (pictures then guess it).
+  std::string up_axis;
   std::vector<GridWithPieces> grids;
   ContextFreeGrammar context_free;  ///< empty when no docking site gave a production
   /// The exemplar's cleaned mesh (used when no grid is resized and for reference).

@@ -35,6 +35,7 @@ void add_generate_command(CLI::App& app) {
     std::size_t max_triangles = 5'000'000;
     int threads = 0;
     bool pictures = false;
+    std::string up;
     bool quiet = false;
   };
   auto options = std::make_shared<Options>();
@@ -61,6 +62,7 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
+  add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->callback([options] {
     const auto threads = limit_threads(options->threads);
@@ -76,6 +78,7 @@ void add_generate_command(CLI::App& app) {
                                                                : VariantRules::automatic;
     variant_options.derivation.max_depth = options->max_depth;
     variant_options.derivation.max_triangles = options->max_triangles;
+    const MeshRenderOptions picture = picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up);
     std::size_t limited = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
@@ -87,7 +90,7 @@ void add_generate_command(CLI::App& app) {
       const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
       write_mesh(folder / file, mesh);
       if (options->pictures)
-        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, {}, {}, picture_options(grammar.exemplar));
+        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, {}, {}, picture);
       nlohmann::json grids = nlohmann::json::object();
       for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
       const ShapeDerivation& d = variant.derivation;

@@ -227,7 +227,8 @@ void write_rules_picture(const std::filesystem::path& folder, const std::string&
     for (std::uint32_t v : d.mesh.triangles[t]) vertex_colors[v] = {colors[t].r, colors[t].g, colors[t].b};
   }
   write_mesh(folder / (stem + ".rules.ply"), d.mesh, &vertex_colors);
-  write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {}, picture_options(report.prepared.model.mesh));
+  write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {},
+                     picture_options(report.prepared.model.mesh, report.grammar.up_axis));
 }
 
 }  // namespace
@@ -256,7 +257,8 @@ void write_analysis_pictures(const std::filesystem::path& folder, const std::str
       for (std::uint32_t v : cut.triangles[t]) vertex_colors[v] = {color.r, color.g, color.b};
     }
     write_mesh(folder / (stem + "." + grid.rule.name + ".ply"), cut, &vertex_colors);
-    write_mesh_picture(folder / (stem + "." + grid.rule.name + ".png"), cut, colors, {}, picture_options(mesh));
+    write_mesh_picture(folder / (stem + "." + grid.rule.name + ".png"), cut, colors, {},
+                       picture_options(mesh, report.grammar.up_axis));
   }
   write_rules_picture(folder, stem, report);
 }

@@ -35,7 +35,8 @@ nlohmann::json analysis_json(const AnalysisReport& report);
 void write_analysis_report(const std::filesystem::path& path, const AnalysisReport& report);
 
 /// NAME.<grid>.png and NAME.<grid>.ply: the model coloured by grid piece class (corners, borders,
-/// interior; repeated units in alternating shades), for every grid.
+/// interior; repeated units in alternating shades), for every grid, and NAME.rules.png/.ply; the
+/// pictures look at the model with the grammar's up axis (guessed when it has none).
 void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report);
 
 }  // namespace dg::cli

@@ -1,13 +1,30 @@
 #include "tools/dockgrammar/pictures.h"
 
+#include "geometry/errors.h"
+
 #include <array>
 
 namespace dg::cli {
 
-MeshRenderOptions picture_options(const TriangleMesh& mesh) {
+void add_up_option(CLI::App& command, std::string& axis, const std::string& fallback) {
+  command.add_option("--up", axis, "Up axis of the model in pictures: x, y or z (default: " + fallback + ")")
+      ->check(CLI::IsMember({"x", "y", "z"}));
+}
+
+MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis) {
   MeshRenderOptions options;
-  const Vec3 size = mesh.bounds().size();
-  if (size.y() < size.x() && size.y() < size.z()) options.camera.up = Vec3(0, 0, 1);
+  if (axis == "x") {
+    options.camera.up = Vec3(1, 0, 0);
+  } else if (axis == "y") {
+    options.camera.up = Vec3(0, 1, 0);
+  } else if (axis == "z") {
+    options.camera.up = Vec3(0, 0, 1);
+  } else if (axis.empty()) {
+    const Vec3 size = mesh.bounds().size();
+    if (size.y() < size.x() && size.y() < size.z()) options.camera.up = Vec3(0, 0, 1);
+  } else {
+    throw InputError("up axis '" + axis + "': expected x, y or z");
+  }
   return options;
 }
 

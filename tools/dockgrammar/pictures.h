@@ -5,13 +5,22 @@
 #include "geometry/mesh.h"
 #include "geometry/render_mesh.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstddef>
+#include <string>
 
 namespace dg::cli {
 
-/// Render options with the up axis guessed from the model: z when the model is thinnest along
-/// y (facades, fences lying in the x-z plane), y otherwise (the common OBJ/glTF convention).
-MeshRenderOptions picture_options(const TriangleMesh& mesh);
+/// Registers `--up x|y|z` (the model's up axis in pictures) on a command. `axis` stays empty
+/// when the option is absent; a value other than x, y or z is a usage error (exit status 2).
+/// `fallback` says in the help text what an absent option means.
+void add_up_option(CLI::App& command, std::string& axis, const std::string& fallback);
+
+/// Render options with the model's up axis: `axis` "x", "y" or "z" as given to --up, or empty
+/// to guess from the model: z when it is thinnest along y (facades, fences lying in the x-z
+/// plane), y otherwise (the common OBJ/glTF convention).
+MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis);
 
 /// A distinct, readable colour for class i (cycled).
 Rgba8 class_color(std::size_t i);

@@ -6,10 +6,12 @@
 #include "geometry/model_io.h"
 #include "grammar/grammar_file.h"
 #include "synthesis/grid_resize.h"
+#include "tools/dockgrammar/pictures.h"
 
 #include <fmt/core.h>
 
 #include <charconv>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -41,12 +43,16 @@ void add_resize_command(CLI::App& app) {
     std::string grammar;
     std::vector<std::string> grids;
     std::string output;
+    bool picture = false;
+    std::string up;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
   command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction), repeatable")->required();
   command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb")->required();
+  command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
+  add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
     std::map<std::string, std::vector<int>> requested;
@@ -68,6 +74,9 @@ void add_resize_command(CLI::App& app) {
     const GridWithPieces& grid = grammar.grids.front();
     const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name), 1e-6 * grammar.eps);
     write_mesh(options->output, result);
+    if (options->picture)
+      write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result, {}, {},
+                         picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up));
     fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
   });
 }

@@ -2,6 +2,7 @@
 
 #include "tools/dockgrammar/commands.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
 #include <fmt/core.h>
@@ -15,18 +16,20 @@ void add_symmetry_command(CLI::App& app) {
     ModelOptions model;
     std::size_t top = 10;
     std::string output;
+    std::string up;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
   add_model_options(*command, options->model);
   command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(CLI::PositiveNumber);
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
+  add_up_option(*command, options->up, "z when the model is thinnest along y, else y");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
     const SymmetryResult result = detect_symmetries(prepared, {}, progress);
-    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top);
+    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top, options->up);
     if (options->model.json) {
       nlohmann::json out = symmetry_json(result, options->top);
       out["model"] = prepared.model.source_path;

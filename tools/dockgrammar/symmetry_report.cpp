@@ -111,7 +111,7 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
 }
 
 void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
-                             const SymmetryResult& result, std::size_t top) {
+                             const SymmetryResult& result, std::size_t top, const std::string& up_axis) {
   if (prepared.model.is_point_cloud()) throw InputError("-o pictures are made for meshes only (this model is a point cloud)");
   std::error_code error;
   std::filesystem::create_directories(folder, error);
@@ -142,7 +142,7 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
       triangle_colors[t] = {color[0], color[1], color[2], 255};
     }
     write_mesh(folder / fmt::format("symmetry_{:02}.ply", i + 1), pieces, &colors);
-    MeshRenderOptions options = picture_options(prepared.model.mesh);
+    MeshRenderOptions options = picture_options(prepared.model.mesh, up_axis);
     options.draw_edges = false;  // the cell pieces would outline every voxel
     write_mesh_picture(folder / fmt::format("symmetry_{:02}.png", i + 1), pieces, triangle_colors, {}, options);
   }

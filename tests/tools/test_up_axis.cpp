@@ -1,0 +1,99 @@
+// `--up x|y|z` on the commands that draw pictures: the camera's up axis follows the option,
+// analyze stores it in the grammar file, and generate and resize default to the stored axis.
+
+#include "geometry/png_reader.h"
+#include "support/cli_run.h"
+
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Width and height (pixels) of the box around every pixel that is not the white background.
+std::pair<int, int> occupied_size(const fs::path& png) {
+  const dg::Image image = dg::read_png(png);
+  int left = image.width, right = -1, top = image.height, bottom = -1;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const dg::Rgba8 p = image.at(x, y);
+      if (p.r > 250 && p.g > 250 && p.b > 250) continue;
+      left = std::min(left, x);
+      right = std::max(right, x);
+      top = std::min(top, y);
+      bottom = std::max(bottom, y);
+    }
+  REQUIRE(right >= left);
+  return {right - left + 1, bottom - top + 1};
+}
+
+bool taller_than_wide(const fs::path& png) {
+  const auto [width, height] = occupied_size(png);
+  return height > width;
+}
+
+}  // namespace
+
+// The spiral stairs stand along +z (2 x 2 wide, 3.16 tall) and are thinnest along x and y
+// alike, so the guess (y up) lays them on their side; --up z stands them up.
+TEST_CASE("--up z stands z-up stairs upright in analyze, generate, resize and symmetry pictures", "[tools][pictures]") {
+  const fs::path folder = fs::temp_directory_path() / "dockgrammar-up-axis-test";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/spiral_stairs_12.obj";
+
+  // Without --up: the guess, stairs lying down; the grammar file has no "up".
+  REQUIRE(dg::test::run_cli("analyze " + model + " -q -o " + (folder / "guess").string(), folder).status == 0);
+  CHECK_FALSE(taller_than_wide(folder / "guess" / "spiral_stairs_12.grid1.png"));
+  {
+    std::ifstream in(folder / "guess" / "spiral_stairs_12.grammar.json");
+    CHECK_FALSE(nlohmann::json::parse(in).contains("up"));
+  }
+
+  // With --up z: upright, and the axis is stored for generate.
+  REQUIRE(dg::test::run_cli("analyze " + model + " -q --up z -o " + (folder / "z").string(), folder).status == 0);
+  CHECK(taller_than_wide(folder / "z" / "spiral_stairs_12.grid1.png"));
+  const std::string grammar = (folder / "z" / "spiral_stairs_12.grammar.json").string();
+  {
+    std::ifstream in(grammar);
+    CHECK(nlohmann::json::parse(in).value("up", "") == "z");
+  }
+  REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --pictures -q -o " + (folder / "stored").string(), folder).status == 0);
+  CHECK(taller_than_wide(folder / "stored" / "variant_00000.png"));
+  // An explicit --up wins over the stored axis.
+  REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --pictures --up y -q -o " + (folder / "y").string(), folder).status ==
+          0);
+  CHECK_FALSE(taller_than_wide(folder / "y" / "variant_00000.png"));
+  REQUIRE(dg::test::run_cli("resize " + grammar + " --grid grid1=16 --picture -o " + (folder / "stairs_16.obj").string(), folder)
+              .status == 0);
+  CHECK(taller_than_wide(folder / "stairs_16.png"));
+
+  REQUIRE(dg::test::run_cli("symmetry " + model + " -q --top 1 --up z -o " + (folder / "symmetry").string(), folder).status == 0);
+  CHECK(taller_than_wide(folder / "symmetry" / "symmetry_01.png"));
+
+  // A bad axis is a usage error: exit status 2, and no picture.
+  const dg::test::CliRun bad = dg::test::run_cli("symmetry " + model + " -q --up w -o " + (folder / "bad").string(), folder);
+  CHECK(bad.status == 2);
+  CHECK(bad.output.find("--up") != std::string::npos);
+  CHECK_FALSE(fs::exists(folder / "bad"));
+  CHECK(dg::test::run_cli("generate " + grammar + " --count 1 --pictures --up 2 -q -o " + (folder / "bad").string(), folder).status ==
+        2);
+  // A grammar file whose stored axis is not x, y or z is bad input.
+  {
+    std::ifstream in(grammar);
+    nlohmann::json document = nlohmann::json::parse(in);
+    document["up"] = "down";
+    std::ofstream(folder / "z" / "broken.grammar.json") << document.dump(2);
+  }
+  const dg::test::CliRun broken =
+      dg::test::run_cli("generate " + (folder / "z" / "broken.grammar.json").string() + " --count 1 -q -o " + (folder / "bad").string(),
+                        folder);
+  CHECK(broken.status == 2);
+  CHECK(broken.output.find("\"up\"") != std::string::npos);
+  fs::remove_all(folder);
+}
