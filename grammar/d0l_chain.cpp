@@ -106,23 +106,26 @@ std::optional<ChainGrammar> recover_chain_grammar(const std::string& text, int m
       }
       const std::optional<Level> first = coarsen(drawn, blocks, r, false);
       if (!first) continue;
+      // Labels matter from the second level on; the first level is scored once (letters all F).
+      const auto score = [&](const Level& level, int iterations) {
+        const std::string f = block_text(blocks[0]), g = block_text(blocks[1]);
+        // The axiom holds at least one symbol per letter: skip building it when that is too long.
+        if (best && level.letters.size() + f.size() + g.size() + 2 >= best->length) return;
+        const std::string axiom = level_text(level);
+        const std::size_t length = grammar_length_of(axiom, f, g);
+        if (!best || length < best->length) best = ChainGrammar{axiom, f, g, iterations, length};
+      };
+      for (Block& b : blocks) b.letters.assign(r, 0);
+      score(*first, 1);
       for (unsigned labels = 0; labels < (1u << (2 * r)); ++labels) {
         for (std::size_t k = 0; k < r; ++k) {
           blocks[0].letters[k] = static_cast<int>((labels >> k) & 1u);
           blocks[1].letters[k] = static_cast<int>((labels >> (r + k)) & 1u);
         }
-        const std::string f = block_text(blocks[0]), g = block_text(blocks[1]);
-        Level level = *first;
-        for (int iterations = 1;; ++iterations) {
-          // The axiom holds at least one symbol per letter: skip building it when that is too long.
-          if (!best || level.letters.size() + f.size() + g.size() + 2 < best->length) {
-            const std::string axiom = level_text(level);
-            const std::size_t length = grammar_length_of(axiom, f, g);
-            if (!best || length < best->length) best = ChainGrammar{axiom, f, g, iterations, length};
-          }
-          std::optional<Level> coarser = coarsen(level, blocks, r, true);
-          if (!coarser) break;
-          level = std::move(*coarser);
+        std::optional<Level> level = coarsen(*first, blocks, r, true);
+        for (int iterations = 2; level; ++iterations) {
+          score(*level, iterations);
+          level = coarsen(*level, blocks, r, true);
         }
       }
     }

@@ -1,6 +1,7 @@
 #include "grammar/inference_segments.h"
 
 #include "grammar/compaction.h"
+#include "grammar/d0l_apex.h"
 #include "grammar/d0l_chain.h"
 #include "grammar/expression.h"
 #include "grammar/lsystem_text.h"
@@ -39,13 +40,18 @@ struct FoundGrammar {
   std::size_t length = 0;
 };
 
-// The shortest of the single-rule compaction and, for unbranched strings, the two-letter chain.
-FoundGrammar compact(const std::string& text, std::size_t max_block) {
+// The shortest of the single-rule compaction, the two-letter chain (unbranched strings) and the
+// apex system X -> u, F -> F^m (branched strings written with `descending_turns`).
+FoundGrammar compact(const std::string& text, std::size_t max_block, bool descending_turns) {
   const CompactGrammar single = compact_turtle_string(text, max_block);
   FoundGrammar found{single.axiom, {}, "", single.iterations, single.length};
   if (single.iterations > 0) found.rules.emplace_back("F", single.successor);
   if (const auto chain = recover_chain_grammar(text); chain && chain->length < found.length)
     found = FoundGrammar{chain->axiom, {{"F", chain->f_successor}, {"G", chain->g_successor}}, "F G", chain->iterations, chain->length};
+  if (text.find('[') != std::string::npos && text.find('*') == std::string::npos)
+    if (const auto apex = recover_apex_grammar(text, descending_turns); apex && apex->length < found.length)
+      found = FoundGrammar{"X", {{"X", apex->apex_successor}, {"F", std::string(static_cast<std::size_t>(apex->m), 'F')}}, "",
+                           apex->iterations, apex->length};
   return found;
 }
 
@@ -144,7 +150,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
       if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)
         return;
-      FoundGrammar grammar = compact(string.text, options.max_block);
+      FoundGrammar grammar = compact(string.text, options.max_block, descending);
       // Shorter first; equal lengths: the start lowest, then leftmost (independent of input order).
       const Vec2 start = tree.nodes.front().start;
       const auto key = [](std::size_t length, const Vec2& p) {

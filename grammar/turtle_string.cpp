@@ -45,6 +45,52 @@ std::optional<double> base_unit(const std::vector<double>& sorted, double gap, d
   return numerator / denominator;
 }
 
+// Depth first from node 0 (parents are numbered before their children), with an explicit stack
+// (chains may be thousands of segments deep); the order of children as tree_turtle_string tells.
+std::string write_turtle_tree(const std::vector<std::vector<std::size_t>>& children, const std::vector<int>& turn_steps,
+                              const std::vector<int>& scale_steps, bool descending_turns) {
+  const std::size_t n = children.size();
+  std::string text;
+  if (n == 0) return text;
+  std::vector<std::size_t> size(n, 1);
+  for (std::size_t v = n; v-- > 0;)
+    for (std::size_t c : children[v]) size[v] += size[c];
+  struct Item {
+    std::size_t node;
+    bool bracketed;
+    bool close;
+  };
+  std::vector<Item> stack{{0, false, false}};
+  std::vector<std::size_t> order;
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    if (item.close) {
+      text += ']';
+      continue;
+    }
+    const std::size_t v = item.node;
+    if (item.bracketed) text += '[';
+    text.append(static_cast<std::size_t>(std::abs(turn_steps[v])), turn_steps[v] > 0 ? '+' : '-');
+    text.append(static_cast<std::size_t>(scale_steps[v]), '*');
+    text += 'F';
+    order = children[v];
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (size[a] != size[b]) return size[a] < size[b];
+      return descending_turns ? turn_steps[a] > turn_steps[b] : turn_steps[a] < turn_steps[b];
+    });
+    for (std::size_t k = order.size(); k-- > 0;) {
+      if (k + 1 == order.size()) {
+        stack.push_back({order[k], false, false});
+      } else {
+        stack.push_back({0, false, true});
+        stack.push_back({order[k], true, false});
+      }
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
 TurtleParameters estimate_turtle_parameters(const InstanceTree& tree) {
@@ -70,9 +116,6 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
   TurtleString result;
   const std::size_t n = tree.nodes.size();
   if (n == 0) return result;
-  std::vector<std::size_t> size(n, 1);
-  for (std::size_t v = n; v-- > 0;)
-    for (std::size_t c : tree.children[v]) size[v] += size[c];
   // Turn steps and scale steps of every node relative to its parent.
   std::vector<int> turn_steps(n, 0), scale_steps(n, 0), exponent(n, 0);
   const double delta = parameters.angle_deg.value_or(0);
@@ -146,41 +189,44 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
     if (expected > 0) result.worst_length_error = std::max(result.worst_length_error, std::abs(length_of(tree.nodes[v]) - expected) / expected);
   }
 
-  // Depth-first writing with an explicit stack (chains may be thousands of segments deep).
-  struct Item {
-    std::size_t node;
-    bool bracketed;
-    bool close;
+  result.text = write_turtle_tree(tree.children, turn_steps, scale_steps, descending_turns);
+  return result;
+}
+
+std::optional<std::string> canonical_turtle_string(const std::string& text, bool descending_turns) {
+  struct State {
+    int heading = 0, scale = 0;
+    std::optional<std::size_t> node;  // the last F drawn in this branch
   };
-  std::vector<Item> stack{{0, false, false}};
-  std::vector<std::size_t> order;
-  while (!stack.empty()) {
-    const Item item = stack.back();
-    stack.pop_back();
-    if (item.close) {
-      result.text += ']';
-      continue;
-    }
-    const std::size_t v = item.node;
-    if (item.bracketed) result.text += '[';
-    result.text.append(static_cast<std::size_t>(std::abs(turn_steps[v])), turn_steps[v] > 0 ? '+' : '-');
-    result.text.append(static_cast<std::size_t>(scale_steps[v]), '*');
-    result.text += 'F';
-    order = tree.children[v];
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      if (size[a] != size[b]) return size[a] < size[b];
-      return descending_turns ? turn_steps[a] > turn_steps[b] : turn_steps[a] < turn_steps[b];
-    });
-    for (std::size_t k = order.size(); k-- > 0;) {
-      if (k + 1 == order.size()) {
-        stack.push_back({order[k], false, false});
-      } else {
-        stack.push_back({0, false, true});
-        stack.push_back({order[k], true, false});
-      }
+  std::vector<std::vector<std::size_t>> children;
+  std::vector<int> heading, scale, turn_steps, scale_steps;
+  std::vector<State> saved;
+  State state;
+  for (char c : text) {
+    if (c == '+') ++state.heading;
+    else if (c == '-') --state.heading;
+    else if (c == '*') ++state.scale;
+    else if (c == '[') saved.push_back(state);
+    else if (c == ']') {
+      if (saved.empty()) return std::nullopt;
+      state = saved.back();
+      saved.pop_back();
+    } else if (c == 'F') {
+      const std::size_t v = children.size();
+      if (!state.node && v > 0) return std::nullopt;  // a second root
+      children.emplace_back();
+      heading.push_back(state.heading);
+      scale.push_back(state.scale);
+      turn_steps.push_back(state.node ? state.heading - heading[*state.node] : state.heading);
+      scale_steps.push_back(state.node ? state.scale - scale[*state.node] : state.scale);
+      if (state.node) children[*state.node].push_back(v);
+      state.node = v;
+    } else {
+      return std::nullopt;
     }
   }
-  return result;
+  if (!saved.empty()) return std::nullopt;
+  return write_turtle_tree(children, turn_steps, scale_steps, descending_turns);
 }
 
 }  // namespace dg

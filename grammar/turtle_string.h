@@ -51,4 +51,10 @@ struct TurtleString {
 TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters& parameters, bool descending_turns,
                                 double snap_angle_deg = 0);
 
+/// The string a drawing of `text` gives (symbols F + - * [ ], anything else: nothing): its
+/// segments as a tree (each F hangs below the last F of its branch; turns and scale steps add up
+/// between them, so `+-` vanishes and brackets without F leave no trace) written as
+/// tree_turtle_string writes trees. Nothing for unbalanced brackets or a drawing of two roots.
+std::optional<std::string> canonical_turtle_string(const std::string& text, bool descending_turns);
+
 }  // namespace dg

@@ -81,7 +81,7 @@ const std::vector<std::string> asserted_cases = {
     "stava_helix_336",     "stava_linear_dist_90", "stava_branch_paper_R4",       "grid_facade_paper",
     "grid_fan_rowrot10",   "guo_binary_d35_r1.5_n7", "noise_shuffled_grid_windows_j1", "plant_124a_d25.7_n5",
     "plant_124b_d35_n4",   "plant_124c_d22.5_n4",  "koch_snowflake_n4",           "koch_quadratic_island_n3",
-    "shuffled_koch_snowflake_n3", "guo_124a_scaled_d30_r1.5_n4", "noise_plant_124a_d25.7_n4_j2", "dragon_n10"};
+    "shuffled_koch_snowflake_n3", "guo_124a_scaled_d30_r1.5_n4", "noise_plant_124a_d25.7_n4_j2", "dragon_n10", "plant_124e_d25.7_n5"};
 
 }  // namespace
 

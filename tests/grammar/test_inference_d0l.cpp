@@ -1,15 +1,18 @@
 // Two-letter D0L recovery on unbranched turtle strings: systems derived here by the engine
 // (grammar/derivation.h), written as the drawing shows them (every letter an `F`, turns summed),
 // must come back as a system that derives the same string and is no longer than the original;
-// and the whole segment path on a dragon curve drawn here.
+// and the same for plants with a non-drawing apex (X -> u, F -> FF); the whole segment path on
+// a dragon curve and an apex plant drawn here.
 
 #include "tests/grammar/inference_measure.h"
 
+#include "grammar/d0l_apex.h"
 #include "grammar/d0l_chain.h"
 #include "grammar/derivation.h"
 #include "grammar/grammar_length.h"
 #include "grammar/inference_segments.h"
 #include "grammar/lsystem_text.h"
+#include "grammar/turtle_string.h"
 #include "synthesis/turtle.h"
 
 #include <catch2/catch.hpp>
@@ -85,6 +88,59 @@ TEST_CASE("d0l chain: a dragon curve drawn here is inferred from its segments", 
   CHECK(inferred->lsystem.productions.size() == 2);
   CHECK(dg::grammar_length(inferred->lsystem) <= dg::grammar_length(truth));
   CHECK(*inferred->lsystem.turtle.angle_deg == Approx(90).margin(0.01));
+  const double diagonal = dg::test::diagonal_of(dg::test::drawing_points(svg, 1.0));
+  const auto input = dg::test::drawing_points(svg, diagonal / 2000);
+  const auto output = dg::test::rederived_points(*inferred, diagonal / 2000);
+  CHECK(dg::test::symmetric_hausdorff(input, output, diagonal / 100) < 1e-6 * diagonal);
+}
+
+TEST_CASE("d0l apex: plants with a non-drawing apex come back from their drawn strings", "[grammar][inference]") {
+  // Prusinkiewicz & Lindenmayer Fig. 1.24d, e, f (n = 5, 4, 4): X draws nothing, F -> FF.
+  for (const std::string text : {"axiom: X\niterations: 5\nX -> F[+X]F[-X]+X\nF -> FF\n",
+                                 "axiom: X\niterations: 4\nX -> F[+X][-X]FX\nF -> FF\n",
+                                 "axiom: X\niterations: 4\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n"}) {
+    const dg::LSystem truth = dg::parse_lsystem_text(text, "truth");
+    std::string raw;
+    for (const dg::Module& m : dg::derive(truth).modules)
+      if (m.symbol != "X") raw += m.symbol;
+    INFO(text);
+    for (bool descending : {false, true}) {
+      const auto drawn = dg::canonical_turtle_string(raw, descending);
+      REQUIRE(drawn);
+      const auto recovered = dg::recover_apex_grammar(*drawn, descending);
+      REQUIRE(recovered);
+      INFO("X -> " << recovered->apex_successor << " | m " << recovered->m << " | n " << recovered->iterations);
+      const std::string rules = "X -> " + recovered->apex_successor + "\nF -> " + std::string(static_cast<std::size_t>(recovered->m), 'F') + "\n";
+      const dg::LSystem again = dg::parse_lsystem_text("axiom: X\niterations: " + std::to_string(recovered->iterations) + "\n" + rules, "recovered");
+      std::string raw_again;
+      for (const dg::Module& m : dg::derive(again).modules)
+        if (m.symbol != "X") raw_again += m.symbol;
+      CHECK(dg::canonical_turtle_string(raw_again, descending) == drawn);
+      CHECK(recovered->length <= dg::grammar_length(truth));
+      CHECK(recovered->length == dg::grammar_length(again));
+    }
+  }
+  // A single-rule plant has no apex copy that ends its branches with whole runs.
+  CHECK_FALSE(dg::recover_apex_grammar("F[+F]F[-F]F", false));
+}
+
+TEST_CASE("d0l apex: a plant with an apex drawn here is inferred from its segments", "[grammar][inference]") {
+  const std::string text = "axiom: X\nangle: 20\nstep: 3\nheading: 80\niterations: 5\nX -> F[+X]F[-X]+X\nF -> FF\n";
+  const dg::LSystem truth = dg::parse_lsystem_text(text, "truth");
+  const dg::Drawing drawing = dg::interpret(dg::derive(truth).modules, dg::turtle_options(truth.turtle));
+  std::vector<dg::TreeSegment> segments;
+  dg::SvgDrawing svg;
+  for (const dg::Stroke& stroke : drawing.strokes) {
+    const auto lines = dg::flatten_path(stroke.path, 1.0);
+    const dg::Vec2 a = lines.front().front(), b = lines.front().back();
+    segments.push_back({a, b});
+    svg.elements.push_back({"path", 0, {{dg::Vec2(a.x(), -a.y()), dg::Vec2(b.x(), -b.y())}}});
+  }
+  const auto inferred = dg::infer_segment_lsystem(segments, true);
+  REQUIRE(inferred);
+  INFO(inferred->text);
+  CHECK(dg::grammar_length(inferred->lsystem) <= dg::grammar_length(truth));
+  CHECK(*inferred->lsystem.turtle.angle_deg == Approx(20).margin(0.01));
   const double diagonal = dg::test::diagonal_of(dg::test::drawing_points(svg, 1.0));
   const auto input = dg::test::drawing_points(svg, diagonal / 2000);
   const auto output = dg::test::rederived_points(*inferred, diagonal / 2000);
