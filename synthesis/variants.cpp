@@ -53,7 +53,7 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     return variant;
   }
   const GridWithPieces& grid = grammar.grids.front();
-  variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), 1e-6 * grammar.eps);
+  variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), kSeamWeldFraction * grammar.eps);
   return variant;
 }
 

@@ -72,7 +72,8 @@ void add_resize_command(CLI::App& app) {
     if (grammar.grids.size() > 1)
       throw InputError(options->grammar + ": resizing grammars with several grids is not supported yet");
     const GridWithPieces& grid = grammar.grids.front();
-    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name), 1e-6 * grammar.eps);
+    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name),
+                                            kSeamWeldFraction * grammar.eps);
     write_mesh(options->output, result);
     if (options->picture)
       write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result, {}, {},
