@@ -192,6 +192,7 @@ nlohmann::json to_json(const CleaningReport& report) {
           {"inconsistent_edges", report.inconsistent_edges},
           {"components", report.components},
           {"closed_and_oriented", report.closed_and_oriented},
+          {"t_junctions_split", report.t_junctions_split},
           {"bounds", bounds_json(report.bounds)}};
 }
 

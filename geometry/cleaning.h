@@ -41,6 +41,9 @@ struct CleaningReport {
   std::size_t duplicate_points_dropped = 0;  ///< point clouds: exact repeats of an earlier point
   std::size_t invalid_normals_dropped = 0;   ///< point clouds: points whose normal is non-finite or zero
   BoundingBox bounds;                   ///< bounds of the cleaned model, model units
+  /// Set by prepare_model after the counts above: open edges split at a vertex lying on them
+  /// (T-junctions, e.g. a fan whose edge skips a vertex of the neighbouring face).
+  std::size_t t_junctions_split = 0;
 };
 
 /// Cleans `mesh` in place: welds vertices with exactly equal positions (the first occurrence

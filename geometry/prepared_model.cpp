@@ -3,11 +3,15 @@
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
 #include "geometry/stopwatch.h"
+#include "geometry/t_junctions.h"
 
 #include <cmath>
 
 namespace dg {
 namespace {
+
+// Distance from an edge, relative to the bounding-box diagonal, within which a vertex splits it.
+constexpr double kTJunctionTolerance = 1e-9;
 
 void check_option(double value, const char* name) {
   if (!std::isfinite(value) || value < 0.0)
@@ -47,6 +51,10 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
     } else {
       prepared.cleaning = clean_mesh(model.mesh);
       if (model.mesh.triangles.empty()) throw InputError("no triangles left after dropping degenerate ones");
+      // A fan edge that skips a vertex of the neighbouring face leaves a crack that exists only in
+      // the topology; as an open edge it would become a feature line that breaks symmetries.
+      prepared.cleaning.t_junctions_split =
+          resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
       prepared.timings.push_back({"clean", clock.lap()});
       report_progress(progress, "feature lines", 0.0);
       prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees);

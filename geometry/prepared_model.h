@@ -36,7 +36,8 @@ struct PreparedModel {
   std::vector<StageTiming> timings;  ///< load, clean, feature lines, voxel surface
 };
 
-/// Loads, cleans, finds feature lines and builds the voxel surface of a model file.
+/// Loads, cleans (then splits open edges at T-junction vertices within 1e-9 of the bounding-box
+/// diagonal), finds feature lines and builds the voxel surface of a model file.
 /// Throws InputError for unreadable/invalid files and impossible options (negative, NaN r).
 PreparedModel prepare_model(const std::filesystem::path& path, const PrepareOptions& options = {},
                             const ProgressCallback& progress = {});

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 using dg::Vec3;
@@ -122,4 +124,40 @@ TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster p
   REQUIRE(balusters != nullptr);
   // 8 balusters: 7 units between cut planes, the eighth stays with the end post (docs/grammar-file.md).
   CHECK(balusters->count == 7);
+}
+
+TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with one unit per gap", "[grammar][grid][corpus]") {
+  const std::filesystem::path gate = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" /
+                                     "arch-kenney-castle-metalgate" / "metal_gate.obj";
+  if (!std::filesystem::exists(gate)) {
+    WARN("corpus not found at " << gate.string() << ": corpus check skipped");
+    return;
+  }
+  const dg::PreparedModel prepared = dg::prepare_model(gate);
+  // Ground truth from the mesh itself: the stakes' flat tops are the faces at the highest y, one
+  // quad per stake, so the distinct z of the top vertices come in pairs.
+  const dg::TriangleMesh& mesh = prepared.model.mesh;
+  const double top = mesh.bounds().max.y();
+  std::vector<double> top_z;
+  for (const Vec3& p : mesh.positions)
+    if (p.y() > top - 1e-6) top_z.push_back(p.z());
+  std::sort(top_z.begin(), top_z.end());
+  top_z.erase(std::unique(top_z.begin(), top_z.end(), [](double a, double b) { return b - a < 1e-4; }), top_z.end());
+  REQUIRE(top_z.size() % 2 == 0);
+  const int stakes = static_cast<int>(top_z.size() / 2);
+  REQUIRE(stakes >= 3);
+  const double pitch = top_z[2] - top_z[0];
+
+  // The source's beams are fans whose edges skip stake vertices (T-junctions); prepare_model
+  // splits them, so no open edge runs along a beam and every gap between stakes repeats.
+  CHECK(prepared.cleaning.t_junctions_split > 0);
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(!grids.empty());
+  const dg::GridDirection* along_stakes = nullptr;
+  for (const dg::GridDirection& d : grids[0].directions)
+    if (std::abs(std::abs(d.direction.z()) - 1) < 1e-4 && std::abs(d.pitch - pitch) < 1e-3) along_stakes = &d;
+  REQUIRE(along_stakes != nullptr);
+  // As for a fence (count = posts - 1): one unit per gap between stakes.
+  CHECK(along_stakes->count == stakes - 1);
 }
