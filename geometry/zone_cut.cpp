@@ -4,6 +4,8 @@
 #include <functional>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <unordered_map>
 
 namespace dg {
@@ -233,6 +235,51 @@ void add_conforming(const Triangle& t, const ZoneCutter& cutter, std::vector<Vec
   for (std::size_t i = 0; i < loop.size(); ++i) add(loop[i], loop[(i + 1) % loop.size()], centre);
 }
 
+// Cuts along different lines can make vertices at one spot (a plane through a point another
+// chord already made): every new vertex within `tolerance` of an earlier vertex of the cut
+// becomes that vertex, and triangles left with a repeated corner go. Vertices below
+// `first_new` never merge with each other, so input indices stay meaningful.
+void merge_coincident(ZoneCut& out, std::uint32_t first_new, const std::vector<char>& touched, double tolerance) {
+  const double cell = 4.0 * std::max(tolerance, 1e-300);
+  using Key = std::array<std::int64_t, 3>;
+  auto key = [&](const Vec3& p) {
+    return Key{static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
+               static_cast<std::int64_t>(std::floor(p.z() / cell))};
+  };
+  std::map<Key, std::vector<std::uint32_t>> grid;
+  const std::vector<Vec3>& positions = out.mesh.positions;
+  std::vector<std::uint32_t> target(positions.size());
+  std::iota(target.begin(), target.end(), 0u);
+  for (std::uint32_t v = 0; v < positions.size(); ++v) {
+    if (v < first_new && !touched[v]) continue;
+    const Key k = key(positions[v]);
+    if (v >= first_new)
+      for (std::int64_t dx = -1; dx <= 1 && target[v] == v; ++dx)
+        for (std::int64_t dy = -1; dy <= 1 && target[v] == v; ++dy)
+          for (std::int64_t dz = -1; dz <= 1 && target[v] == v; ++dz) {
+            const auto bucket = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+            if (bucket == grid.end()) continue;
+            for (std::uint32_t w : bucket->second)
+              if ((positions[w] - positions[v]).norm() <= tolerance) {
+                target[v] = w;
+                break;
+              }
+          }
+    if (target[v] == v) grid[k].push_back(v);
+  }
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < out.mesh.triangles.size(); ++t) {
+    const Triangle& old = out.mesh.triangles[t];
+    const Triangle w{target[old[0]], target[old[1]], target[old[2]]};
+    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;
+    out.mesh.triangles[kept] = w;
+    out.origin[kept] = out.origin[t];
+    ++kept;
+  }
+  out.mesh.triangles.resize(kept);
+  out.origin.resize(kept);
+}
+
 }  // namespace
 
 ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const std::vector<PlaneFamily>& families,
@@ -248,6 +295,11 @@ ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const 
     if (!zone[t]) add_conforming(mesh.triangles[t], cutter, positions, t, out);
   for (const Piece& p : pieces) add_conforming(p.corners, cutter, positions, p.origin, out);
   out.mesh.positions = std::move(positions);
+  std::vector<char> touched(mesh.positions.size(), 0);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    if (zone[t])
+      for (std::uint32_t v : mesh.triangles[t]) touched[v] = 1;
+  merge_coincident(out, static_cast<std::uint32_t>(mesh.positions.size()), touched, tolerance);
   return out;
 }
 

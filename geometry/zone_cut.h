@@ -33,7 +33,9 @@ using PieceFilter = std::function<bool(const std::array<Vec3, 3>& corners, std::
 /// of `families`, one family after the other; with `wanted`, only along the planes it accepts
 /// for a piece (lowest first; the parts above are asked again). Vertices of flagged triangles within `tolerance` (model units)
 /// of a plane are moved onto it. Every triangle and piece is then split at the vertices that
-/// cuts of its neighbours created on its edges, so the mesh stays conforming. Deterministic.
+/// cuts of its neighbours created on its edges, so the mesh stays conforming; new vertices
+/// within `tolerance` of an earlier vertex of the cut are merged into it (triangles left with a
+/// repeated corner go), so no two vertices share a spot. Deterministic.
 ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const std::vector<PlaneFamily>& families,
                  double tolerance, const PieceFilter& wanted = {});
 
