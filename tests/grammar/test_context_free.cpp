@@ -6,7 +6,9 @@
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
 #include "support/mesh_distance.h"
+#include "geometry/model_io.h"
 #include "synthesis/shape_derivation.h"
+#include "synthesis/variants.h"
 #include "synthesis/verify.h"
 
 #include <catch2/catch.hpp>
@@ -26,14 +28,18 @@ struct Analysed {
   dg::ContextFreeGrammar grammar;
 };
 
-Analysed analyse(const std::string& asset, const nlohmann::json& parameters) {
-  dg::Model model;
-  model.mesh = dg::assets::make_asset(asset, parameters).mesh;
+Analysed analyse_model(dg::Model model) {
   Analysed a{dg::prepare_model(std::move(model)), {}, {}, {}};
   a.symmetries = dg::detect_symmetries(a.prepared);
   a.sites = dg::find_docking_sites(a.prepared, a.symmetries);
   a.grammar = dg::build_context_free_grammar(a.prepared, a.sites, {});
   return a;
+}
+
+Analysed analyse(const std::string& asset, const nlohmann::json& parameters) {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset(asset, parameters).mesh;
+  return analyse_model(std::move(model));
 }
 
 // facade(3x4), analysed once for the tests below.
@@ -44,10 +50,12 @@ const Analysed& facade_3x4() {
 
 // Derives `count` seeded variants and checks each is closed, free of self-intersections and
 // passes verify against the exemplar; returns the triangle counts and the production sequences seen.
+// Seeds are those `generate --seed 1` gives its first `count` variants.
 std::pair<std::set<std::size_t>, std::set<std::vector<std::size_t>>> check_variants(const Analysed& a, std::uint64_t count) {
   std::set<std::size_t> sizes;
   std::set<std::vector<std::size_t>> derivations;
-  for (std::uint64_t seed = 1; seed <= count; ++seed) {
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::uint64_t seed = dg::variant_seed(1, i);
     dg::ShapeDerivationOptions options;
     options.seed = seed;
     const dg::ShapeDerivation d = dg::derive_shape(a.grammar, a.prepared.surface.eps(), options);
@@ -246,8 +254,23 @@ TEST_CASE("facade(3x4): voxel-face seams give rules that rebuild the exemplar, v
                       [](const dg::ShapeNonterminal& n) { return n.seam.kind == dg::SeamSurface::Kind::voxel_faces; }));
     check_rebuilds_exemplar(a);
   }
-  SECTION("8 random variants: closed, no self-intersections, verify passes") {
-    CHECK(check_variants(a, 8).second.size() >= 4);  // the random choices differ
+  SECTION("8 random variants: closed, no self-intersections, verify passes, about the exemplar's size") {
+    const auto [sizes, derivations] = check_variants(a, 8);
+    CHECK(derivations.size() >= 4);  // the random choices differ
+    // A variant is made of copies of exemplar parts: it gains triangles only along its seams
+    // (the exemplar has 1,948; cutting along whole voxel planes once gave 168k-185k).
+    CHECK(*sizes.rbegin() < 4 * a.prepared.model.mesh.triangles.size());
+  }
+  SECTION("pieces hold about as many triangles as the exemplar parts they copy") {
+    // Every piece is part of the exemplar: per exemplar's worth of area, the pieces may hold a
+    // few times the exemplar's triangles (seams add some), not a hundred times.
+    double area = a.grammar.axiom.terminal.area();
+    std::size_t triangles = a.grammar.axiom.terminal.triangles.size();
+    for (const dg::ShapeProduction& p : a.grammar.productions) area += p.terminal.area(), triangles += p.terminal.triangles.size();
+    const double copies = area / a.prepared.model.mesh.area();
+    INFO(triangles << " triangles in pieces holding " << copies << " copies of the exemplar's area");
+    CHECK(static_cast<double>(triangles) < 3.0 * copies * static_cast<double>(a.prepared.model.mesh.triangles.size()));
+    CHECK(a.grammar.axiom.terminal.triangles.size() < 3 * a.prepared.model.mesh.triangles.size());
   }
   SECTION("voxel-face seams survive the grammar file") {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-cf-voxel-seam-test";
@@ -269,6 +292,16 @@ TEST_CASE("facade(3x4): voxel-face seams give rules that rebuild the exemplar, v
           dg::derive_shape(read.context_free, grammar.eps, options).productions);
     std::filesystem::remove_all(folder);
   }
+}
+
+TEST_CASE("shelf(3x4) file: 5 context-free variants closed, no self-intersections, verify passes",
+          "[grammar][context_free][verify][voxel_seam]") {
+  // The committed model, as `analyze` and `generate --count 5 --seed 1` see it (its cuts once
+  // left two vertices at one spot and zero-area triangles that opened every variant).
+  const Analysed a = analyse_model(dg::read_model(std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models/shelf_3x4.obj"));
+  REQUIRE_FALSE(a.grammar.empty());
+  check_rebuilds_exemplar(a);
+  check_variants(a, 5);
 }
 
 TEST_CASE("voxel seam contact: points on a seam face are near it, points a voxel away are not", "[grammar][voxel_seam]") {
