@@ -1,6 +1,7 @@
 // Bench of the L-system inference: drawings of 100 to 5,000 elements are made by the L-system
 // engine (a window grid, a branching tree of leaves, a spiral of leaves with a linearly changing
-// step, a bracketed plant of segments), then inferred from vectors (Št'ava et al. 2010; the plant
+// step, a bracketed plant of segments, the dragon curve with two drawing letters, a plant with a
+// non-drawing apex X -> F[+X][-X]FX, F -> FF), then inferred from vectors (Št'ava et al. 2010; the plant
 // through the instance tree of Guo et al. 2020 when that is shorter); Koch islands and window
 // grids are also rasterized and inferred from pixels. Prints one line per drawing: kind,
 // elements, seconds, method, grammar length. Usage: dockgrammar-bench-lsystem [--quick]
@@ -104,6 +105,14 @@ std::string plant(int iterations) {
   return fmt::format("axiom: F\nangle: 25.7\nstep: 10\nheading: 90\niterations: {}\nF -> F[+F]F[-F]F\n", iterations);
 }
 
+std::string dragon(int iterations) {
+  return fmt::format("axiom: L\nangle: 90\nstep: 10\ndraw: L R\niterations: {}\nL -> L+R+\nR -> -L-R\n", iterations);
+}
+
+std::string apex_plant(int iterations) {
+  return fmt::format("axiom: X\nangle: 25.7\nstep: 8\nheading: 90\niterations: {}\nX -> F[+X][-X]FX\nF -> FF\n", iterations);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -118,6 +127,10 @@ int main(int argc, char** argv) {
     if (!quick || iterations <= 4) run("plant", plant(iterations));
   for (int iterations : {3, 4, 5, 6})
     if (!quick || iterations <= 5) run_choice("plant-tree", plant(iterations));
+  for (int iterations : {8, 10, 12})
+    if (!quick || iterations <= 10) run_choice("dragon", dragon(iterations));
+  for (int iterations : {4, 5, 6, 7})
+    if (!quick || iterations <= 6) run_choice("apex-plant", apex_plant(iterations));
   // Pixels: about 10 px per Koch step, 40 px per window column.
   for (int iterations : {1, 2, 3}) run_pixels("koch-px", koch_island(iterations), 24 * (1 << (2 * iterations)) + 64);
   for (const auto& [rows, columns] : std::vector<std::pair<int, int>>{{10, 10}, {20, 25}, {32, 37}})

@@ -131,7 +131,7 @@ TEST_CASE("pixel inference: PNG corpus cases that meet the targets", "[pixel][gr
 }
 
 TEST_CASE("instance tree: shuffled segments give the same grammar", "[pixel][grammar][corpus]") {
-  for (const std::string id : {"koch_snowflake_n4", "plant_124a_d25.7_n5"}) {
+  for (const std::string id : {"koch_snowflake_n4", "plant_124a_d25.7_n5", "plant_124e_d25.7_n5"}) {
     const fs::path svg = dg::test::lsystem_corpus_dir() / (id + ".svg");
     if (!fs::exists(svg)) {
       WARN("corpus absent: " << svg.string());
