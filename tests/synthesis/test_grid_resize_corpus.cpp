@@ -1,0 +1,95 @@
+// Resizing a real third-party grid model (../shared/corpus, skipped when absent): the Sweet Home 3D
+// railing, 8 balusters of 16 triangles each between two rails (corpus SOURCES.md).
+
+#include "synthesis/grid_resize.h"
+#include "synthesis/verify.h"
+
+#include "grammar/grid_rules.h"
+#include "support/mesh_distance.h"
+#include "symmetry/symmetry_detection.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace {
+
+// x of the centre of every baluster: the triangles crossing the railing's mid-height (only
+// balusters reach there; the rails run along the bottom and the top), grouped where they are
+// less than 0.05 model units apart along x (balusters are 0.018 wide, 0.118 apart).
+std::vector<double> baluster_positions(const dg::TriangleMesh& mesh) {
+  const dg::BoundingBox box = mesh.bounds();
+  const double middle = 0.5 * (box.min.y() + box.max.y());
+  std::vector<std::pair<double, double>> spans;  // x range of each triangle crossing mid-height
+  for (const dg::Triangle& t : mesh.triangles) {
+    const dg::Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    if (std::min({a.y(), b.y(), c.y()}) < middle && std::max({a.y(), b.y(), c.y()}) > middle)
+      spans.emplace_back(std::min({a.x(), b.x(), c.x()}), std::max({a.x(), b.x(), c.x()}));
+  }
+  std::sort(spans.begin(), spans.end());
+  std::vector<double> centres;
+  std::size_t i = 0;
+  while (i < spans.size()) {
+    const double low = spans[i].first;
+    double high = spans[i].second;
+    for (++i; i < spans.size() && spans[i].first <= high + 0.05; ++i) high = std::max(high, spans[i].second);
+    centres.push_back(0.5 * (low + high));
+  }
+  return centres;
+}
+
+}  // namespace
+
+TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one baluster and one pitch", "[synthesis][grid][corpus]") {
+  const std::filesystem::path railing =
+      std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" / "arch-sh3d-railing" / "railing.obj";
+  if (!std::filesystem::exists(railing)) {
+    WARN("corpus not found at " << railing.string() << ": corpus resize check skipped");
+    return;
+  }
+  const dg::PreparedModel prepared = dg::prepare_model(railing);
+  const dg::TriangleMesh& exemplar = prepared.model.mesh;
+  // Ground truth from the exemplar itself, not from the grammar: 8 balusters, evenly spaced.
+  const std::vector<double> balusters = baluster_positions(exemplar);
+  REQUIRE(balusters.size() == 8);
+  const double spacing = (balusters.back() - balusters.front()) / 7;
+  for (std::size_t i = 1; i < balusters.size(); ++i) CHECK(balusters[i] - balusters[i - 1] == Approx(spacing).margin(1e-6));
+
+  const double eps = prepared.surface.eps();
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const int own = grids[0].directions[0].count;
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(exemplar, grids[0], eps);
+  const double weld = dg::kSeamWeldFraction * eps;
+
+  // The grid's own count gives the exemplar back.
+  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {own}, weld);
+  CHECK(dg::test::hausdorff_distance(same, exemplar) < eps);
+  CHECK(same.area() == Approx(exemplar.area()).epsilon(1e-3));
+
+  for (int change : {-1, 1}) {
+    CAPTURE(change);
+    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {own + change}, weld);
+    // One baluster more or less, at the same spacing, starting where the exemplar's start.
+    const std::vector<double> xs = baluster_positions(resized);
+    REQUIRE(xs.size() == static_cast<std::size_t>(8 + change));
+    CHECK(xs.front() == Approx(balusters.front()).margin(1e-6));
+    for (std::size_t i = 1; i < xs.size(); ++i) CHECK(xs[i] - xs[i - 1] == Approx(spacing).margin(1e-6));
+    // The railing grows or shrinks by one spacing along x only.
+    const dg::Vec3 growth = resized.bounds().size() - exemplar.bounds().size();
+    CHECK(growth.x() == Approx(change * spacing).margin(1e-6));
+    CHECK(std::abs(growth.y()) < 1e-9);
+    CHECK(std::abs(growth.z()) < 1e-9);
+    // The exemplar is open and self-intersecting (balusters pierce the rails), so verify asks
+    // no closedness of the result, but every sampled neighbourhood must be one of the exemplar's.
+    dg::Model exemplar_model, candidate;
+    exemplar_model.mesh = exemplar;
+    candidate.mesh = resized;
+    const dg::VerifyReport report = dg::verify_models(std::move(exemplar_model), std::move(candidate));
+    CHECK(report.similarity.fraction >= 0.995);
+    CHECK(report.pass);
+  }
+}
