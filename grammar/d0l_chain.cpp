@@ -1,5 +1,6 @@
 #include "grammar/d0l_chain.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -45,25 +46,28 @@ std::size_t grammar_length_of(const std::string& axiom, const std::string& f, co
 }
 
 // The coarser level whose letters, rewritten by the blocks (`blocks[letter]`) and joined with
-// their turns, give `level`; `labelled`: the letters of `level` must match the blocks' letters
-// (otherwise only the inner turns decide, as on the drawing itself where F and G look alike).
-std::optional<Level> coarsen(const Level& level, const Block blocks[2], std::size_t r, bool labelled) {
+// their turns, give `level`. The inner turns decide which block a group of r letters is; with
+// `known` (levels above the drawing, where letters are F or G) a block's letters are learnt from
+// its first group and every later group of that block must repeat them. On the drawing itself F
+// and G look alike, so letters are not compared there (`known` null).
+std::optional<Level> coarsen(const Level& level, Block blocks[2], std::size_t r, bool* known) {
   if (level.letters.size() % r != 0 || level.letters.size() < r) return std::nullopt;
   Level out;
   const std::size_t groups = level.letters.size() / r;
   out.letters.reserve(groups);
   out.turns.reserve(groups);
   for (std::size_t g = 0; g < groups; ++g) {
+    const auto first = level.letters.begin() + static_cast<long>(g * r);
     int match = -1;
-    for (int b = 0; b < 2 && match < 0; ++b) {
-      bool same = true;
-      for (std::size_t k = 0; k < r && same; ++k) {
-        if (labelled && level.letters[g * r + k] != blocks[b].letters[k]) same = false;
-        if (k > 0 && level.turns[g * r + k] != blocks[b].inner[k - 1]) same = false;
-      }
-      if (same) match = b;
-    }
+    for (int b = 0; b < 2 && match < 0; ++b)
+      if (std::equal(blocks[b].inner.begin(), blocks[b].inner.end(), level.turns.begin() + static_cast<long>(g * r + 1))) match = b;
     if (match < 0) return std::nullopt;
+    if (known && !known[match]) {
+      blocks[match].letters.assign(first, first + static_cast<long>(r));
+      known[match] = true;
+    } else if (known && !std::equal(first, first + static_cast<long>(r), blocks[match].letters.begin())) {
+      return std::nullopt;
+    }
     const int before = g == 0 ? 0 : blocks[out.letters.back()].trail;
     out.turns.push_back(level.turns[g * r] - before - blocks[match].lead);
     out.letters.push_back(match);
@@ -104,29 +108,18 @@ std::optional<ChainGrammar> recover_chain_grammar(const std::string& text, int m
         b.lead = e % span - max_edge_turns, e /= span;
         b.trail = e % span - max_edge_turns, e /= span;
       }
-      const std::optional<Level> first = coarsen(drawn, blocks, r, false);
-      if (!first) continue;
-      // Labels matter from the second level on; the first level is scored once (letters all F).
-      const auto score = [&](const Level& level, int iterations) {
-        const std::string f = block_text(blocks[0]), g = block_text(blocks[1]);
-        // The axiom holds at least one symbol per letter: skip building it when that is too long.
-        if (best && level.letters.size() + f.size() + g.size() + 2 >= best->length) return;
-        const std::string axiom = level_text(level);
-        const std::size_t length = grammar_length_of(axiom, f, g);
-        if (!best || length < best->length) best = ChainGrammar{axiom, f, g, iterations, length};
-      };
       for (Block& b : blocks) b.letters.assign(r, 0);
-      score(*first, 1);
-      for (unsigned labels = 0; labels < (1u << (2 * r)); ++labels) {
-        for (std::size_t k = 0; k < r; ++k) {
-          blocks[0].letters[k] = static_cast<int>((labels >> k) & 1u);
-          blocks[1].letters[k] = static_cast<int>((labels >> (r + k)) & 1u);
+      std::optional<Level> level = coarsen(drawn, blocks, r, nullptr);
+      bool known[2] = {false, false};
+      for (int iterations = 1; level; ++iterations) {
+        const std::string f = block_text(blocks[0]), g = block_text(blocks[1]);
+        // The axiom holds at least one symbol per letter: build it only when that can be shorter.
+        if (!best || level->letters.size() + f.size() + g.size() + 2 < best->length) {
+          const std::string axiom = level_text(*level);
+          const std::size_t length = grammar_length_of(axiom, f, g);
+          if (!best || length < best->length) best = ChainGrammar{axiom, f, g, iterations, length};
         }
-        std::optional<Level> level = coarsen(*first, blocks, r, true);
-        for (int iterations = 2; level; ++iterations) {
-          score(*level, iterations);
-          level = coarsen(*level, blocks, r, true);
-        }
+        level = coarsen(*level, blocks, r, known);
       }
     }
   }

@@ -2,10 +2,11 @@
 // Two-letter D0L systems from unbranched turtle strings (the dragon curve's kind: two drawing
 // symbols F and G that differ only in what they are rewritten to). The string is read as N
 // segments with the net turn (in δ steps) before each; it is cut into groups of r segments,
-// whose inner turns must show exactly two patterns (F's block and G's block). The labels of the
-// letters inside both blocks and the turns before and after them are searched; a hypothesis
-// holds when every coarser level again cuts into the two labelled blocks, so the string is
-// σ^n(axiom) up to turns that add up between blocks (`+-` is no turn in a drawing).
+// whose inner turns must show exactly two patterns (F's block and G's block). The turns before
+// and after both blocks are searched; which letters inside a block are F or G is read off the
+// first group of that block one level up, and a hypothesis holds for as many levels as every
+// coarser level again cuts into the two labelled blocks, so the string is σ^n(axiom) up to
+// turns that add up between blocks (`+-` is no turn in a drawing).
 
 #include <cstddef>
 #include <optional>
@@ -26,7 +27,7 @@ struct ChainGrammar {
 /// turns, is `text` (symbols F + - only; anything else gives nothing). Blocks of 2 to
 /// `max_block_letters` letters, turns before and after a block of at most `max_edge_turns`
 /// steps. Nothing when no hypothesis explains the string with at least one rewriting level.
-std::optional<ChainGrammar> recover_chain_grammar(const std::string& text, int max_block_letters = 4,
+std::optional<ChainGrammar> recover_chain_grammar(const std::string& text, int max_block_letters = 8,
                                                   int max_edge_turns = 2);
 
 }  // namespace dg

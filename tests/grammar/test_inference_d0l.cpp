@@ -49,10 +49,13 @@ dg::LSystem chain_system(const dg::ChainGrammar& g) {
 
 TEST_CASE("d0l chain: two-letter systems come back from their drawn strings", "[grammar][inference]") {
   // The dragon as in the corpus's source (L, R both draw; turns before and after letters), the
-  // dragon's two-symbol form, and a system with three letters per block.
+  // dragon's two-symbol form, a system with three letters per block, Sierpiński's arrowhead and
+  // the Gosper curve (seven letters per block).
   for (const std::string text : {"axiom: L\ndraw: L R\niterations: 8\nL -> L+R+\nR -> -L-R\n",
                                  "axiom: F\ndraw: F G\niterations: 9\nF -> F+G\nG -> F-G\n",
-                                 "axiom: F\ndraw: F G\niterations: 5\nF -> F+G-F\nG -> G--F+G\n"}) {
+                                 "axiom: F\ndraw: F G\niterations: 5\nF -> F+G-F\nG -> G--F+G\n",
+                                 "axiom: A\ndraw: A B\niterations: 6\nA -> B-A-B\nB -> A+B+A\n",
+                                 "axiom: A\ndraw: A B\niterations: 3\nA -> A-B--B+A++AA+B-\nB -> +A-BB--B-A++A+B\n"}) {
     const dg::LSystem truth = dg::parse_lsystem_text(text, "truth");
     const std::string drawn = drawn_string(truth);
     const auto recovered = dg::recover_chain_grammar(drawn);
