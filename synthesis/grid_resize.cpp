@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 namespace dg {
 namespace {
 
@@ -36,28 +34,6 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
   return placements;
 }
 
-// Flags the vertices of `piece` that lie on its seams: on an open edge and on one of the planes
-// that bound the piece (head: plane 0, unit: planes 0 and 1, tail: plane `count`, per direction,
-// within `tolerance` model units). Open edges the exemplar had elsewhere (a baluster's open end
-// resting on a rail's open edge) stay as they were, so resizing never joins parts the exemplar
-// kept apart.
-std::vector<char> seam_vertices(const GridRule& grid, const GridPiece& piece, double tolerance) {
-  std::vector<char> seam = open_edge_vertices(piece.mesh);
-  for (std::size_t v = 0; v < seam.size(); ++v) {
-    if (!seam[v]) continue;
-    bool on_plane = false;
-    for (std::size_t i = 0; i < grid.directions.size(); ++i) {
-      const GridDirection& d = grid.directions[i];
-      const double offset = d.direction.dot(piece.mesh.positions[v]) - d.cut;
-      auto near = [&](int plane) { return std::abs(offset - plane * d.pitch) <= tolerance; };
-      const int cls = piece.classes[i];
-      on_plane = on_plane || (cls == 0 && near(0)) || (cls == 1 && (near(0) || near(1))) || (cls == 2 && near(d.count));
-    }
-    seam[v] = on_plane;
-  }
-  return seam;
-}
-
 }  // namespace
 
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
@@ -79,19 +55,19 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   TriangleMesh result;
   result.positions.reserve(vertices);
   result.triangles.reserve(triangles);
-  std::vector<char> seams;  // per vertex of the result: lies on a seam of its piece
-  seams.reserve(vertices);
+  std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
+  seam_vertices.reserve(vertices);
   for (std::size_t p = 0; p < pieces.size(); ++p) {
     const TriangleMesh& mesh = pieces[p].mesh;
-    const std::vector<char> seam = seam_vertices(grid, pieces[p], weld_tolerance);
+    const std::vector<char> open = open_edge_vertices(mesh);
     for (const RigidTransform& placement : placements[p]) {
       const auto base = static_cast<std::uint32_t>(result.positions.size());
       for (const Vec3& position : mesh.positions) result.positions.push_back(placement.apply(position));
       for (const Triangle& t : mesh.triangles) result.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-      seams.insert(seams.end(), seam.begin(), seam.end());
+      seam_vertices.insert(seam_vertices.end(), open.begin(), open.end());
     }
   }
-  resolve_t_junctions(result, weld_tolerance, &seams);
+  resolve_t_junctions(result, weld_tolerance, &seam_vertices);
   return result;
 }
 

@@ -17,9 +17,7 @@ namespace dg {
 inline constexpr double kSeamWeldFraction = 1e-4;
 
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
-/// range) and welds their seams: vertices on the pieces' open edges and cut planes closer than
-/// `weld_tolerance` (model units) merge, and seam edges are split where the two sides were
-/// triangulated differently; open edges away from the cut planes are kept as they were. Counts equal to the
+/// range) and welds vertices closer than `weld_tolerance` (model units). Counts equal to the
 /// grid's own counts reproduce the exemplar. Throws InputError when a count is out of range
 /// or the number of counts does not match the grid's dimension.
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
