@@ -16,4 +16,20 @@ CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
 }
 
+std::filesystem::path fresh_folder(const std::string& name) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+AnalyzedModel analyze_model(const std::string& stem, const std::filesystem::path& folder, const std::string& options) {
+  std::filesystem::create_directories(folder);
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/" + stem + ".obj";
+  AnalyzedModel analyzed;
+  analyzed.run = run_cli("analyze " + model + " -q " + options + " -o " + folder.string(), folder);
+  analyzed.grammar = folder / (stem + ".grammar.json");
+  return analyzed;
+}
+
 }  // namespace dg::test

@@ -15,4 +15,17 @@ struct CliRun {
 /// Runs `dockgrammar ARGUMENTS` with stdout and stderr captured in FOLDER/log.txt.
 CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder);
 
+/// An empty folder `name` in the system's temporary directory (removed first when present).
+std::filesystem::path fresh_folder(const std::string& name);
+
+/// What `dockgrammar analyze` left for the tests: its run and the grammar file it wrote.
+struct AnalyzedModel {
+  CliRun run;
+  std::filesystem::path grammar;
+};
+
+/// Runs `dockgrammar analyze assets/models/STEM.obj -q OPTIONS -o FOLDER` (FOLDER created when
+/// missing); the grammar is FOLDER/STEM.grammar.json.
+AnalyzedModel analyze_model(const std::string& stem, const std::filesystem::path& folder, const std::string& options = "");
+
 }  // namespace dg::test

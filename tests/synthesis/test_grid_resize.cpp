@@ -4,13 +4,12 @@
 #include "geometry/errors.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
+#include "support/cli_run.h"
 #include "support/mesh_distance.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
-#include <sys/wait.h>
 #include <fstream>
 #include <iterator>
 
@@ -156,17 +155,12 @@ TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") 
 }
 
 TEST_CASE("resize CLI: unknown grid or count out of range exits 2 and writes nothing", "[synthesis][grid]") {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-resize-cli-test";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  const std::string cli = DOCKGRAMMAR_CLI;
-  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
-  REQUIRE(std::system((cli + " analyze " + model + " -q -o " + folder.string() + " > /dev/null").c_str()) == 0);
-  const std::string grammar = (folder / "fence_4.grammar.json").string();
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-resize-cli-test");
+  const dg::test::AnalyzedModel fence = dg::test::analyze_model("fence_4", folder);
+  REQUIRE(fence.run.status == 0);
   const std::string out = (folder / "out.obj").string();
   auto status_of = [&](const std::string& arguments) {
-    const int status = std::system((cli + " resize " + grammar + " " + arguments + " -o " + out + " 2> /dev/null").c_str());
-    return WEXITSTATUS(status);
+    return dg::test::run_cli("resize " + fence.grammar.string() + " " + arguments + " -o " + out, folder).status;
   };
   CHECK(status_of("--grid nosuch=3") == 2);
   CHECK(status_of("--grid grid1=-2") == 2);

@@ -4,6 +4,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/errors.h"
 #include "geometry/topology.h"
+#include "support/cli_run.h"
 #include "support/mesh_distance.h"
 
 #include <catch2/catch.hpp>
@@ -73,13 +74,11 @@ TEST_CASE("facade variants: seeded, independent of batch position, closed, verif
 }
 
 TEST_CASE("generate CLI: same seed, same files; different seed, different files", "[synthesis][variants]") {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-generate-test";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-generate-test");
+  const dg::test::AnalyzedModel fence = dg::test::analyze_model("fence_4", folder);
+  REQUIRE(fence.run.status == 0);
   const std::string cli = DOCKGRAMMAR_CLI;
-  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
-  REQUIRE(std::system((cli + " analyze " + model + " -q -o " + folder.string() + " > /dev/null").c_str()) == 0);
-  const std::string grammar = (folder / "fence_4.grammar.json").string();
+  const std::string grammar = fence.grammar.string();
   for (const char* run : {"a", "b"})
     REQUIRE(std::system((cli + " generate " + grammar + " --count 4 --seed 5 -q -o " + (folder / run).string()).c_str()) == 0);
   REQUIRE(std::system((cli + " generate " + grammar + " --count 4 --seed 6 -q -o " + (folder / "c").string()).c_str()) == 0);

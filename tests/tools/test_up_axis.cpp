@@ -42,13 +42,11 @@ bool taller_than_wide(const fs::path& png) {
 // The spiral stairs stand along +z (2 x 2 wide, 3.16 tall) and are thinnest along x and y
 // alike, so the guess (y up) lays them on their side; --up z stands them up.
 TEST_CASE("--up z stands z-up stairs upright in analyze, generate, resize and symmetry pictures", "[tools][pictures]") {
-  const fs::path folder = fs::temp_directory_path() / "dockgrammar-up-axis-test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-test");
   const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/spiral_stairs_12.obj";
 
   // Without --up: the guess, stairs lying down; the grammar file has no "up".
-  REQUIRE(dg::test::run_cli("analyze " + model + " -q -o " + (folder / "guess").string(), folder).status == 0);
+  REQUIRE(dg::test::analyze_model("spiral_stairs_12", folder / "guess").run.status == 0);
   CHECK_FALSE(taller_than_wide(folder / "guess" / "spiral_stairs_12.grid1.png"));
   {
     std::ifstream in(folder / "guess" / "spiral_stairs_12.grammar.json");
@@ -56,9 +54,10 @@ TEST_CASE("--up z stands z-up stairs upright in analyze, generate, resize and sy
   }
 
   // With --up z: upright, and the axis is stored for generate.
-  REQUIRE(dg::test::run_cli("analyze " + model + " -q --up z -o " + (folder / "z").string(), folder).status == 0);
+  const dg::test::AnalyzedModel upright = dg::test::analyze_model("spiral_stairs_12", folder / "z", "--up z");
+  REQUIRE(upright.run.status == 0);
   CHECK(taller_than_wide(folder / "z" / "spiral_stairs_12.grid1.png"));
-  const std::string grammar = (folder / "z" / "spiral_stairs_12.grammar.json").string();
+  const std::string grammar = upright.grammar.string();
   {
     std::ifstream in(grammar);
     CHECK(nlohmann::json::parse(in).value("up", "") == "z");
