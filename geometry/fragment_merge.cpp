@@ -141,6 +141,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   // joined edges around (the vertex's other end of each open edge is recorded).
   std::vector<std::array<std::uint32_t, 2>> open_ends(straighten_open_borders ? mesh.positions.size() : 0);
   std::vector<std::uint8_t> open_count(open_ends.size(), 0);
+  std::vector<char> between_origins(open_ends.size(), 0);  // on an edge between two input triangles
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].first == uses[i].first) ++j;
@@ -150,8 +151,10 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
         if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
         else kept[v] = 1;
-    } else if (j - i != 2 || label[a] != label[b] || (straighten_open_borders && origin[a] != origin[b])) {
+    } else if (j - i != 2 || label[a] != label[b]) {
       kept[lo] = kept[hi] = 1;
+    } else if (straighten_open_borders && origin[a] != origin[b]) {
+      between_origins[lo] = between_origins[hi] = 1;
     }
     if (j - i == 2 && label[a] == label[b] && origin[a] == origin[b]) {
       interior_edge[uses[i].second] = interior_edge[uses[i + 1].second] = 1;
@@ -164,7 +167,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     const Vec3 &p = mesh.positions[v], &a = mesh.positions[open_ends[v][0]], &b = mesh.positions[open_ends[v][1]];
     const double length = (b - a).norm();
     // Kept unless it lies on the segment between its two open neighbours (1e-9 of its length).
-    kept[v] = open_count[v] != 2 || !(length > 0.0) || (b - a).cross(p - a).norm() > 1e-9 * length * length ||
+    kept[v] = open_count[v] != 2 || between_origins[v] || !(length > 0.0) || (b - a).cross(p - a).norm() > 1e-9 * length * length ||
               (p - a).dot(b - a) <= 0.0 || (p - b).dot(a - b) <= 0.0;
   }
   std::vector<std::vector<std::uint32_t>> regions;

@@ -12,6 +12,8 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <fmt/format.h>
 #include <map>
 #include <numeric>
@@ -156,8 +158,33 @@ std::vector<std::vector<std::size_t>> independent_sets(const std::vector<std::si
   return sets;
 }
 
+// Every vertex of `a` lies within `tolerance` (model units) of a vertex of `b`.
+bool vertices_covered(const TriangleMesh& a, const TriangleMesh& b, double tolerance) {
+  using Key = std::array<std::int64_t, 3>;
+  auto key = [&](const Vec3& p) {
+    return Key{static_cast<std::int64_t>(std::floor(p.x() / tolerance)), static_cast<std::int64_t>(std::floor(p.y() / tolerance)),
+               static_cast<std::int64_t>(std::floor(p.z() / tolerance))};
+  };
+  std::map<Key, std::vector<std::uint32_t>> grid;
+  for (std::uint32_t v = 0; v < b.positions.size(); ++v) grid[key(b.positions[v])].push_back(v);
+  for (const Vec3& p : a.positions) {
+    const Key k = key(p);
+    bool near = false;
+    for (std::int64_t dx = -1; dx <= 1 && !near; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && !near; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && !near; ++dz) {
+          const auto cell = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (cell == grid.end()) continue;
+          for (std::uint32_t v : cell->second) near = near || (b.positions[v] - p).norm() <= tolerance;
+        }
+    if (!near) return false;
+  }
+  return true;
+}
+
 // Equal up to `tolerance` (model units): same left side, same terminal triangles (compared by
-// count, area and bounding box) and the same child slots with the same exemplar productions.
+// count, area, bounding box and vertices) and the same child slots with the same exemplar
+// productions.
 bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance) {
   if (a.lhs != b.lhs || a.terminal.triangles.size() != b.terminal.triangles.size() || a.children.size() != b.children.size())
     return false;
@@ -172,7 +199,7 @@ bool same_production(const ShapeProduction& a, const ShapeProduction& b, double 
         !same_motion(x.placement, y.placement, Vec3::Zero(), tolerance))
       return false;
   }
-  return true;
+  return vertices_covered(a.terminal, b.terminal, tolerance) && vertices_covered(b.terminal, a.terminal, tolerance);
 }
 
 class Builder {
@@ -533,6 +560,7 @@ class Builder {
     p.lhs = node == kNone ? kNoProduction : class_index_[nodes_[node].klass];
     p.terminal = transformed(remainder(node, children), to_frame);
     p.source_site = node == kNone ? 0 : node;
+    p.source_frame = node == kNone ? RigidTransform{} : nodes_[node].frame;
     for (std::size_t c : children)
       p.children.push_back({class_index_[nodes_[c].klass], to_frame.after(nodes_[c].frame), nodes_[c].first_production});
     return p;

@@ -1,0 +1,69 @@
+// Joining needlessly split fragments again (re-triangulation of labelled regions).
+
+#include "geometry/fragment_merge.h"
+
+#include "geometry/topology.h"
+#include "geometry/zone_cut.h"
+
+#include <catch2/catch.hpp>
+
+using dg::Vec3;
+
+namespace {
+
+// The unit square in z = 0 (two triangles) cut along x = 0.1 .. 0.9 and y = 0.1 .. 0.9.
+dg::ZoneCut diced_square() {
+  dg::TriangleMesh square;
+  square.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  dg::PlaneFamily x{Vec3::UnitX(), {}}, y{Vec3::UnitY(), {}};
+  for (int k = 1; k <= 9; ++k) x.offsets.push_back(0.1 * k), y.offsets.push_back(0.1 * k);
+  return dg::cut_zone(square, {1, 1}, {x, y}, 1e-9);
+}
+
+std::vector<char> corners_pinned(const dg::TriangleMesh& mesh) {
+  std::vector<char> pinned(mesh.positions.size(), 0);
+  std::fill(pinned.begin(), pinned.begin() + 4, 1);
+  return pinned;
+}
+
+Vec3 centroid(const dg::TriangleMesh& mesh, std::size_t t) {
+  const auto [a, b, c] = mesh.corners(t);
+  return (a + b + c) / 3.0;
+}
+
+}  // namespace
+
+TEST_CASE("fragment merge: a diced square keeps only its label border", "[geometry][fragment_merge]") {
+  const dg::ZoneCut cut = diced_square();
+  REQUIRE(cut.mesh.triangles.size() > 150);
+  std::vector<std::uint32_t> label(cut.mesh.triangles.size());
+  for (std::size_t t = 0; t < label.size(); ++t) label[t] = centroid(cut.mesh, t).x() < 0.5 ? 0 : 1;
+  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh));
+  // Kept vertices: the 40 on the open outline (every 0.1) and, inside it, those on the label
+  // border x = 0.5: 9 where the y planes cross it and 4 where diagonals of the first cut's
+  // fragments do; a triangulation with them has 2 * 13 + 40 - 2 = 64 triangles.
+  CHECK(merged.mesh.triangles.size() == 64);
+  CHECK(merged.mesh.area() == Approx(1.0).epsilon(1e-12));
+  for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+    const Vec3 c = centroid(merged.mesh, t);
+    CHECK((c.x() < 0.5) == (label[merged.representative[t]] == 0));  // on its label's side
+    CHECK(merged.mesh.area_vector(t).z() > 0.0);                       // orientation kept
+  }
+  // Conforming: only the square's outline is open, in its 40 pieces.
+  const dg::EdgeStatistics edges = dg::edge_statistics(merged.mesh);
+  CHECK(edges.non_manifold_edges == 0);
+  CHECK(edges.boundary_edges == 40);
+}
+
+TEST_CASE("fragment merge: one label and straightened open borders give back the two triangles", "[geometry][fragment_merge]") {
+  const dg::ZoneCut cut = diced_square();
+  const std::vector<std::uint32_t> label(cut.mesh.triangles.size(), 0);
+  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), true);
+  CHECK(merged.mesh.triangles.size() == 2);
+  CHECK(merged.mesh.area() == Approx(1.0).epsilon(1e-12));
+  // Without straightening, the vertices on the open outline stay.
+  const dg::MergedFragments kept = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh));
+  CHECK(kept.mesh.triangles.size() > 2);
+  CHECK(kept.mesh.area() == Approx(1.0).epsilon(1e-12));
+}
