@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,9 @@ struct ShapeProduction {
   TriangleMesh terminal;  ///< in the lhs frame (model frame for the axiom)
   std::vector<ChildSlot> children;
   std::size_t source_site = 0;  ///< exemplar location it was cut from (report only)
+  /// From the lhs frame to the model at that location (identity for the axiom); tells how the
+  /// piece was oriented in the exemplar. Absent in grammar files written before it existed.
+  std::optional<RigidTransform> source_frame;
 };
 
 struct ContextFreeGrammar {

@@ -105,11 +105,13 @@ nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProductio
     write_mesh(folder / file, p.terminal);
     terminal = folder.filename().string() + "/" + file;
   }
-  return {{"lhs", p.lhs == kNoProduction ? nlohmann::json(nullptr) : nlohmann::json(g.nonterminals[p.lhs].name)},
-          {"terminal", terminal},
-          {"triangles", p.terminal.triangles.size()},
-          {"children", children},
-          {"source_site", p.source_site}};
+  nlohmann::json out = {{"lhs", p.lhs == kNoProduction ? nlohmann::json(nullptr) : nlohmann::json(g.nonterminals[p.lhs].name)},
+                        {"terminal", terminal},
+                        {"triangles", p.terminal.triangles.size()},
+                        {"children", children},
+                        {"source_site", p.source_site}};
+  if (p.source_frame) out["source_frame"] = matrix_json(p.source_frame->matrix());
+  return out;
 }
 
 }  // namespace
@@ -204,6 +206,7 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
   if (!p.contains("terminal")) throw InputError(where + ": a production has no \"terminal\"");
   if (!p.at("terminal").is_null()) production.terminal = load(field<std::string>(p, "terminal", where));
   production.source_site = field<std::size_t>(p, "source_site", where);
+  if (p.contains("source_frame")) production.source_frame = matrix_field(p, "source_frame", where);
   for (const nlohmann::json& c : field<nlohmann::json>(p, "children", where)) {
     ChildSlot slot;
     slot.nonterminal = nonterminal(field<std::string>(c, "nonterminal", where));

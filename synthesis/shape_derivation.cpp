@@ -1,5 +1,6 @@
 #include "synthesis/shape_derivation.h"
 
+#include "geometry/errors.h"
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "grammar/random.h"
@@ -12,6 +13,9 @@
 
 namespace dg {
 namespace {
+
+// How far (unit vectors) the up axis of a chosen piece may be from the exemplar's: 1e-3 rad.
+constexpr double kUprightTolerance = 1e-3;
 
 struct OpenSlot {
   ChildSlot slot;
@@ -30,12 +34,59 @@ SeamContact contact_of(const ContextFreeGrammar& g, const ShapeProduction& p, co
   };
 }
 
+// The productions a slot may take: those of its non-terminal, and with an up axis only those
+// that keep it pointing as the piece stood in the exemplar.
+class Candidates {
+ public:
+  Candidates(const ContextFreeGrammar& grammar, const std::optional<Vec3>& up) : by_lhs_(grammar.nonterminals.size()), up_(up) {
+    for (std::size_t p = 0; p < grammar.productions.size(); ++p) by_lhs_[grammar.productions[p].lhs].push_back(p);
+    if (!up_) return;
+    for (const ShapeProduction& p : grammar.productions) {
+      if (!p.source_frame)
+        throw InputError("the grammar file has no source frames (written by an older analyze); run analyze again to "
+                         "generate upright variants");
+      up_in_frame_.push_back(p.source_frame->rotation.transpose() * *up_);
+    }
+  }
+
+  /// Candidates of a slot of `nonterminal` whose frame goes to the model by `world`.
+  std::vector<std::size_t> at(std::size_t nonterminal, const RigidTransform& world) const {
+    std::vector<std::size_t> list = by_lhs_[nonterminal];
+    if (up_) {
+      const Vec3 up_here = world.rotation.transpose() * *up_;
+      std::erase_if(list, [&](std::size_t p) { return (up_in_frame_[p] - up_here).norm() > kUprightTolerance; });
+    }
+    return list;
+  }
+
+ private:
+  std::vector<std::vector<std::size_t>> by_lhs_;
+  std::optional<Vec3> up_;
+  std::vector<Vec3> up_in_frame_;  // per production: the up axis in its lhs frame
+};
+
 }  // namespace
+
+bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options) {
+  if (grammar.empty() || options.exemplar_only) return false;
+  const Candidates choices(grammar, options.up);
+  std::vector<OpenSlot> open;
+  for (const ChildSlot& c : grammar.axiom.children) open.push_back({c, c.placement, 1});
+  while (!open.empty()) {
+    const OpenSlot slot = open.back();
+    open.pop_back();
+    if (slot.depth > options.max_depth) continue;
+    for (std::size_t p : choices.at(slot.slot.nonterminal, slot.world))
+      if (p != slot.slot.original_production) return true;
+    for (const ChildSlot& c : grammar.productions[slot.slot.original_production].children)
+      open.push_back({c, slot.world.after(c.placement), slot.depth + 1});
+  }
+  return false;
+}
 
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
   if (grammar.empty()) throw std::invalid_argument("derive_shape: the grammar has no context-free rules");
-  std::vector<std::vector<std::size_t>> by_lhs(grammar.nonterminals.size());
-  for (std::size_t p = 0; p < grammar.productions.size(); ++p) by_lhs[grammar.productions[p].lhs].push_back(p);
+  const Candidates choices(grammar, options.up);
 
   ShapeDerivation result;
   Random random(options.seed);
@@ -66,7 +117,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     const bool too_big = triangles > options.max_triangles;
     result.depth_limited = result.depth_limited || too_deep;
     result.triangle_limited = result.triangle_limited || too_big;
-    const std::vector<std::size_t>& candidates = by_lhs[slot.slot.nonterminal];
+    const std::vector<std::size_t> candidates = choices.at(slot.slot.nonterminal, slot.world);
     std::optional<std::pair<std::size_t, TriangleMesh>> accepted;  // production and its moved terminal
     if (!options.exemplar_only && !too_deep && !too_big && !candidates.empty()) {
       for (int attempt = 0; attempt < options.retries && !accepted; ++attempt) {

@@ -9,6 +9,7 @@
 #include "grammar/context_free.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct ShapeDerivationOptions {
   bool exemplar_only = false;                ///< always take the exemplar's production (rebuilds the exemplar)
   double seam_tolerance = 0.0;               ///< model units; 0 = the grammar's eps
   bool weld_seams = true;                    ///< false: pieces stay separate (for pictures)
+  /// Upright derivation: when set (a unit model axis), a production is chosen only where it keeps
+  /// this axis pointing as it did in the exemplar (rotations about it stay allowed), so a window
+  /// is never placed lying on its side. Needs every production's source_frame.
+  std::optional<Vec3> up;
 };
 
 struct ShapeDerivation {
@@ -35,6 +40,11 @@ struct ShapeDerivation {
   /// for the axiom's terminal). Empty when the seams were welded.
   std::vector<std::size_t> triangle_nonterminal;
 };
+
+/// Whether some slot of the exemplar's own derivation (within max_depth) may take a production
+/// other than the exemplar's there (with `options.up`: an upright one). Without such a slot
+/// every derivation rebuilds the exemplar.
+bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options);
 
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:
 /// seams are welded within 1e-6 eps. Deterministic for a given seed.

@@ -22,7 +22,12 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   const bool has_context_free = !grammar.context_free.empty();
   if (options.rules == VariantRules::context_free && !has_context_free)
     throw InputError("the grammar has no context-free rules (no docking site gave a production)");
-  if (options.rules != VariantRules::grid && has_context_free) {
+  // Automatic: context-free rules when some slot has a choice (upright ones when asked), grids
+  // otherwise; a grammar whose only alternatives turn pieces over gives grid variants upright.
+  const bool use_context_free = options.rules == VariantRules::context_free ||
+                                (options.rules == VariantRules::automatic && has_context_free &&
+                                 (grammar.grids.empty() || derivation_has_choice(grammar.context_free, options.derivation)));
+  if (use_context_free) {
     plan.context_free = true;
     return plan;
   }

@@ -10,7 +10,8 @@
 
 namespace dg {
 
-/// Which rules make variants: context-free rules when the grammar has them, else the grid.
+/// Which rules make variants. automatic: context-free rules when the grammar has them and some
+/// slot has a choice under the derivation options (see derivation_has_choice), else the grid.
 enum class VariantRules { automatic, grid, context_free };
 
 struct VariantOptions {

@@ -36,6 +36,7 @@ void add_generate_command(CLI::App& app) {
     int threads = 0;
     bool pictures = false;
     std::string up;
+    std::string orientation = "upright";
     bool quiet = false;
   };
   auto options = std::make_shared<Options>();
@@ -50,7 +51,7 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 100.0));
-  command->add_option("--rules", options->rules, "auto (context-free rules when the grammar has them), grid or context-free")
+  command->add_option("--rules", options->rules, "auto (context-free rules when they can change the exemplar under --orientation, else the grid), grid or context-free")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "grid", "context-free"}));
   command->add_option("--max-depth", options->max_depth, "Context-free: deeper slots get the exemplar's production")
@@ -63,6 +64,12 @@ void add_generate_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
+  command
+      ->add_option("--orientation", options->orientation,
+                   "Context-free: upright (pieces keep the up axis of --up pointing as in the exemplar; they may turn "
+                   "about it) or free (any rigid motion the grammar allows, e.g. a window on its side)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"upright", "free"}));
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->callback([options] {
     const auto threads = limit_threads(options->threads);
@@ -79,6 +86,7 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_depth = options->max_depth;
     variant_options.derivation.max_triangles = options->max_triangles;
     const MeshRenderOptions picture = picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up);
+    if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
     std::size_t limited = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
@@ -115,7 +123,8 @@ void add_generate_command(CLI::App& app) {
       fmt::print(stderr, "note: {} variant(s) reached --max-depth or --max-triangles; their deeper slots kept the exemplar's geometry\n",
                  limited);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
-                                     {"count", options->count},     {"variants", variants}};
+                                     {"count", options->count},     {"orientation", options->orientation},
+                                     {"variants", variants}};
     write_file_atomically(folder / "manifest.json", [&](std::ostream& out) { out << manifest.dump(2) << '\n'; }, false);
     if (!options->quiet) fmt::print(stderr, "wrote {} variants and manifest.json to {}\n", options->count, folder.string());
   });
