@@ -4,6 +4,7 @@
 #include "grammar/d0l_apex.h"
 #include "grammar/d0l_chain.h"
 #include "grammar/expression.h"
+#include "grammar/inference_transform.h"
 #include "grammar/lsystem_text.h"
 #include "grammar/turtle_string.h"
 
@@ -38,20 +39,31 @@ struct FoundGrammar {
   std::string draw;  // `draw:` setting, empty for F alone
   int iterations = 0;
   std::size_t length = 0;
+  int angle_divisor = 1;  // the rules turn by the drawing's δ divided by this
+  int start_turn = 0;     // the axiom's leading turn steps (of δ / angle_divisor), left to the start heading
 };
 
-// The shortest of the single-rule compaction, the two-letter chain (unbranched strings) and the
-// apex system X -> u, F -> F^m (branched strings written with `descending_turns`).
-FoundGrammar compact(const std::string& text, std::size_t max_block, bool descending_turns) {
+// The shortest of the single-rule compaction, the one- or two-letter chain (unbranched strings;
+// also with half the drawing's δ) and the apex system X -> u, F -> F^m (branched strings written
+// with `descending_turns`).
+FoundGrammar compact(const std::string& text, std::size_t max_block, bool descending_turns, std::optional<double> angle_deg) {
   const CompactGrammar single = compact_turtle_string(text, max_block);
-  FoundGrammar found{single.axiom, {}, "", single.iterations, single.length};
+  FoundGrammar found{single.axiom, {}, "", single.iterations, single.length, 1};
   if (single.iterations > 0) found.rules.emplace_back("F", single.successor);
-  if (const auto chain = recover_chain_grammar(text); chain && chain->length < found.length)
-    found = FoundGrammar{chain->axiom, {{"F", chain->f_successor}, {"G", chain->g_successor}}, "F G", chain->iterations, chain->length};
+  for (int turn_factor : {1, 2}) {
+    // Steps of a full turn, when δ / turn_factor divides 360 (turns then wrap around).
+    const double full = angle_deg ? 360 * turn_factor / *angle_deg : 0;
+    const int full_turn = std::abs(full - std::round(full)) < 0.01 ? static_cast<int>(std::lround(full)) : 0;
+    if (const auto chain = recover_chain_grammar(text, turn_factor, full_turn); chain && chain->length < found.length) {
+      found = FoundGrammar{chain->axiom, {{"F", chain->f_successor}}, "", chain->iterations, chain->length, turn_factor,
+                           chain->start_turn};
+      if (!chain->g_successor.empty()) found.rules.emplace_back("G", chain->g_successor), found.draw = "F G";
+    }
+  }
   if (text.find('[') != std::string::npos && text.find('*') == std::string::npos)
     if (const auto apex = recover_apex_grammar(text, descending_turns); apex && apex->length < found.length)
       found = FoundGrammar{"X", {{"X", apex->apex_successor}, {"F", std::string(static_cast<std::size_t>(apex->m), 'F')}}, "",
-                           apex->iterations, apex->length};
+                           apex->iterations, apex->length, 1};
   return found;
 }
 
@@ -150,7 +162,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
       if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)
         return;
-      FoundGrammar grammar = compact(string.text, options.max_block, descending);
+      FoundGrammar grammar = compact(string.text, options.max_block, descending, string.angle_deg);
       // Shorter first; equal lengths: the start lowest, then leftmost (independent of input order).
       const Vec2 start = tree.nodes.front().start;
       const auto key = [](std::size_t length, const Vec2& p) {
@@ -181,11 +193,13 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
   result.rules = best->grammar.iterations > 0 ? best->grammar.rules.size() : 0;
   std::ostringstream text;
   text << "# inferred from " << segments.size() << " segments: instance tree and repeated-block compaction (Guo et al. 2020)\n";
+  const double unit = best->string.angle_deg.value_or(0) / best->grammar.angle_divisor;
   text << "axiom: " << best->grammar.axiom << "\n";
-  if (best->string.angle_deg) text << "angle: " << rounded_text(*best->string.angle_deg, 2) << "\n";
+  if (best->string.angle_deg) text << "angle: " << rounded_text(unit, 2) << "\n";
   if (best->parameters.scale) text << "scale: " << rounded_text(*best->parameters.scale, 4) << "\n";
   text << "step: " << rounded_text(best->string.step, 4) << "\n";
-  if (rounded_text(best->string.heading_deg, 2) != "0") text << "heading: " << rounded_text(best->string.heading_deg, 2) << "\n";
+  const double heading = wrap_degrees(best->string.heading_deg + best->grammar.start_turn * unit);
+  if (rounded_text(heading, 2) != "0") text << "heading: " << rounded_text(heading, 2) << "\n";
   if (!best->grammar.draw.empty()) text << "draw: " << best->grammar.draw << "\n";
   if (best->grammar.iterations > 0) {
     text << "iterations: " << best->grammar.iterations << "\n";
