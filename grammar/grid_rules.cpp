@@ -13,6 +13,10 @@
 namespace dg {
 namespace {
 
+// Distance of a unit direction from the span of others above which it counts as independent
+// (about 1 degree).
+constexpr double kIndependentDirection = 0.02;
+
 // Sorted, merged intervals of the line where a cut plane may not go.
 class Blocked {
  public:
@@ -177,13 +181,15 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   return best;
 }
 
+// Whether t leaves the span of the chosen directions by more than about 1 degree: detected
+// generators carry noise (zdm2: (2, 0.002, -0.001) and (6, -0.001, 0.001) are one direction).
 bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
   if (chosen.empty()) return true;
   Eigen::Matrix<double, 3, Eigen::Dynamic> basis(3, static_cast<Eigen::Index>(chosen.size()));
   for (std::size_t i = 0; i < chosen.size(); ++i) basis.col(static_cast<Eigen::Index>(i)) = chosen[i].direction;
   const Vec3 unit = t.normalized();
   const Eigen::VectorXd coefficients = basis.colPivHouseholderQr().solve(unit);
-  return (basis * coefficients - unit).norm() > 1e-3;
+  return (basis * coefficients - unit).norm() > kIndependentDirection;
 }
 
 }  // namespace
