@@ -105,7 +105,9 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
         if (found == next.end() || found->second.size() != 1 || ++steps > border_edges) return false;
         to = found->second.front();
       }
-      cdt.insert_constraint(handle.at(v), handle.at(to));
+      const auto end = handle.find(to);
+      if (end == handle.end()) return false;  // the border does not close
+      cdt.insert_constraint(handle.at(v), end->second);
       if (cdt.number_of_vertices() != starts.size()) return false;  // constraints crossed
     }
   mark_nesting(cdt);
@@ -115,6 +117,9 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
     if (f->info() % 2 == 0) continue;
     Triangle t;
     for (int k = 0; k < 3; ++k) t[k] = f->vertex(k)->info();
+    const double longest = std::max({(positions[t[1]] - positions[t[0]]).squaredNorm(), (positions[t[2]] - positions[t[1]]).squaredNorm(),
+                                     (positions[t[0]] - positions[t[2]]).squaredNorm()});
+    if (2.0 * area_of(positions, t) <= 1e-12 * longest) return false;  // a sliver that cleaning would drop
     covered += area_of(positions, t);
     triangles.push_back(t);
   }
