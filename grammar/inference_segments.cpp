@@ -158,6 +158,7 @@ std::optional<InferredLSystem> infer_segment_lsystem(const std::vector<TreeSegme
     const TurtleParameters parameters = estimate_turtle_parameters(tree);
     for (bool descending : {false, true}) {
       TurtleString string = tree_turtle_string(tree, parameters, descending, options.snap_angle_deg);
+      if (descending && string.text.find('[') == std::string::npos) break;  // no branches: the same string again
       const double turn_limit = std::min(options.max_turn_error_deg, 0.4 * parameters.angle_deg.value_or(90));
       if (!string.expressible || string.worst_turn_error_deg > turn_limit ||
           string.worst_length_error > options.max_length_error)

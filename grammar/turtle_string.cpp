@@ -138,12 +138,15 @@ TurtleString tree_turtle_string(const InstanceTree& tree, const TurtleParameters
     for (std::size_t c : tree.children[p]) summed[c] = summed[p] + turn_steps[c];
   if (delta > 0) {
     const double root_heading = heading_of(tree.nodes.front());
+    std::vector<double> relative(n);  // headings relative to the root's, computed once
+    for (std::size_t v = 0; v < n; ++v) relative[v] = heading_of(tree.nodes[v]) - root_heading;
     double best_cost = std::numeric_limits<double>::infinity();
     for (int k = -500; k <= 500; ++k) {
       const double candidate = delta + 0.01 * k;
       double cost = 0;
       for (std::size_t v = 0; v < n; ++v) {
-        const double r = wrap_degrees(heading_of(tree.nodes[v]) - root_heading - summed[v] * candidate);
+        const double d = relative[v] - summed[v] * candidate;
+        const double r = d - 360 * std::nearbyint(d / 360);  // wrapped into [-180, 180]
         cost += r * r;
       }
       if (cost < best_cost) best_cost = cost, result.angle_deg = candidate;
