@@ -133,6 +133,19 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     lowest = std::min(lowest, s);
     highest = std::max(highest, s);
   }
+  // Planes that hold a whole face: a cut there would leave the face on either side by rounding.
+  std::vector<double> face_planes;
+  const TriangleMesh& mesh = prepared.model.mesh;
+  const double in_plane = 1e-6 * surface.eps();
+  for (const Triangle& tri : mesh.triangles) {
+    const double a = d.dot(mesh.positions[tri[0]]), b = d.dot(mesh.positions[tri[1]]), c = d.dot(mesh.positions[tri[2]]);
+    if (std::max({a, b, c}) - std::min({a, b, c}) <= in_plane) face_planes.push_back(a);
+  }
+  std::sort(face_planes.begin(), face_planes.end());
+  auto holds_a_face = [&](double plane) {
+    const auto it = std::lower_bound(face_planes.begin(), face_planes.end(), plane - in_plane);
+    return it != face_planes.end() && *it <= plane + in_plane;
+  };
   std::map<double, int> phases;  // phase in [0, pitch) -> vertices on a plane at that phase
   const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
   for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
@@ -141,6 +154,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   std::optional<GridDirection> best;
   double best_clearance = -1.0;
   int best_vertices = -1;
+  std::size_t best_crossed = 0;
   const double wanted_clearance = surface.r();
   for (const auto& [phase, vertices] : phases) {
     // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
@@ -162,19 +176,29 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
         }
       }
       if (count < min_repeats) continue;
+      bool on_face = false;
+      for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
+      if (on_face) continue;
       double clearance = wanted_clearance;
       clearance = std::min(clearance, first_plane.clearance(first));
       for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
       clearance = std::min(clearance, backward.clearance(first + count * pitch));
+      // Among equally clear runs: the smallest seams (fewest surface cells crossed: between the
+      // stakes of a gate rather than through them), then planes through existing vertices.
+      std::size_t crossed = 0;
+      for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
+      const bool same_clearance = clearance > best_clearance - 1e-12 && clearance < best_clearance + 1e-12;
       const bool better = !best || count > best->count ||
-                          (count == best->count && (clearance > best_clearance + 1e-12 ||
-                                                    (clearance > best_clearance - 1e-12 && vertices > best_vertices)));
+                          (count == best->count &&
+                           (clearance > best_clearance + 1e-12 ||
+                            (same_clearance && (crossed < best_crossed || (crossed == best_crossed && vertices > best_vertices)))));
       if (better) {
         // A translation's generator is kept exact (no rotation noise from the detector's fit).
         const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
         best = GridDirection{motion, t, d, pitch, first, count, symmetry_index};
         best_clearance = clearance;
         best_vertices = vertices;
+        best_crossed = crossed;
       }
     }
   }
