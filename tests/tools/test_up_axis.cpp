@@ -41,7 +41,7 @@ bool taller_than_wide(const fs::path& png) {
 
 // The spiral stairs stand along +z (2 x 2 wide, 3.16 tall) and are thinnest along x and y
 // alike, so the guess (y up) lays them on their side; --up z stands them up.
-TEST_CASE("--up z stands z-up stairs upright in analyze, generate, resize and symmetry pictures", "[tools][pictures]") {
+TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resize and symmetry pictures", "[tools][pictures]") {
   const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-test");
   const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/spiral_stairs_12.obj";
 
