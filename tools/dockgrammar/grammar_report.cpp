@@ -182,9 +182,9 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
   const CleaningReport& c = prepared.cleaning;
   std::string md = fmt::format("# Analysis of {}\n\n", prepared.model.source_path);
   md += fmt::format("r = {:.6g}, eps = {:.6g} (model units). {} vertices, {} triangles ({} degenerate dropped, {} duplicated), "
-                    "{} boundary and {} non-manifold edges, {} components.\n\n",
+                    "{} boundary and {} non-manifold edges, {} components; {} open edges split at T-junctions for the analysis.\n\n",
                     prepared.surface.r(), prepared.surface.eps(), c.vertices, c.triangles, c.degenerate_dropped,
-                    c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components);
+                    c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
   md += "```\n\n## Grid rules\n\n";

@@ -23,8 +23,8 @@ std::string summary_text(const PreparedModel& prepared) {
                                  c.welded_vertices));
     line("triangles", fmt::format("{} ({} read, {} degenerate dropped, {} duplicated)", c.triangles, c.input_triangles,
                                   c.degenerate_dropped, c.duplicate_triangles));
-    line("edges", fmt::format("{} boundary, {} non-manifold, {} inconsistently oriented", c.boundary_edges,
-                              c.non_manifold_edges, c.inconsistent_edges));
+    line("edges", fmt::format("{} boundary, {} non-manifold, {} inconsistently oriented; {} split at T-junctions for analysis",
+                              c.boundary_edges, c.non_manifold_edges, c.inconsistent_edges, c.t_junctions_split));
     line("components", fmt::format("{}{}", c.components, c.closed_and_oriented ? " (closed, consistently oriented)" : ""));
   }
   line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
