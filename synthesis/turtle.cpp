@@ -30,7 +30,9 @@ TurtleOptions turtle_options(const TurtleSettings& settings) {
   if (settings.step) options.step = *settings.step;
   if (settings.heading_deg) options.heading_deg = *settings.heading_deg;
   if (!settings.draw_symbols.empty()) options.draw_symbols = settings.draw_symbols;
-  if (!settings.motifs.count("A")) options.motifs["A"] = parse_svg_path(default_motif);
+  // `A` is the leaf motif unless the system declares it a drawing symbol.
+  const bool a_draws = std::find(options.draw_symbols.begin(), options.draw_symbols.end(), "A") != options.draw_symbols.end();
+  if (!settings.motifs.count("A") && !a_draws) options.motifs["A"] = parse_svg_path(default_motif);
   for (const auto& [symbol, data] : settings.motifs) {
     try {
       options.motifs[symbol] = parse_svg_path(data);

@@ -40,7 +40,7 @@ inline constexpr const char* default_motif = "M 0 0 C 3 6 11 7 16 0 C 11 -3 4 -3
 
 /// Turtle options from an L-system's settings: its angle, scale, step (default 1), heading
 /// (default 0), drawing symbols (default F) and motifs (parsed; `A` gets default_motif unless
-/// declared otherwise). Throws InputError when a motif's path data is malformed.
+/// it has a motif of its own or is a drawing symbol). Throws InputError when a motif's path data is malformed.
 TurtleOptions turtle_options(const TurtleSettings& settings);
 
 /// Where the turtle is: position (y-up drawing units), heading (degrees counter-clockwise) and

@@ -47,6 +47,13 @@ TEST_CASE("motif symbols place a scaled, rotated copy of their path", "[synthesi
   CHECK((end_of(d.strokes[2]) - dg::Vec2(0, 2)).norm() < 1e-12);  // L draws like F, step 1 * scale 2
   const dg::Drawing leaf = draw("axiom: A\n");  // A has a default motif
   CHECK(leaf.strokes.size() == 1);
+  CHECK(leaf.strokes[0].path.commands.size() > 2);  // the leaf outline, not a segment
+  // Declared a drawing symbol, A draws a segment of one step like F.
+  const dg::Drawing segments = draw("axiom: A+B\nangle: 90\ndraw: A B\n");
+  REQUIRE(segments.strokes.size() == 2);
+  CHECK(segments.strokes[0].path.commands.size() == 2);
+  CHECK((end_of(segments.strokes[0]) - dg::Vec2(1, 0)).norm() < 1e-12);
+  CHECK((end_of(segments.strokes[1]) - dg::Vec2(1, 1)).norm() < 1e-12);
 }
 
 TEST_CASE("the turtle reports missing settings and unbalanced brackets", "[synthesis]") {
