@@ -9,9 +9,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
-#include "grammar/context_free.h"
-#include "grammar/docking_sites.h"
-#include "grammar/grid_rules.h"
+#include "support/asset_grammar.h"
 
 #include <catch2/catch.hpp>
 
@@ -47,19 +45,7 @@ TEST_CASE("upright derivation keeps the facade's windows portrait; free derivati
   const double width = asset.ground_truth["dimensions"]["window"][0], height = asset.ground_truth["dimensions"]["window"][1],
                depth = asset.ground_truth["dimensions"]["window"][2];
   REQUIRE(height > width);
-  dg::Model model;
-  model.mesh = asset.mesh;
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
-  dg::ShapeGrammar grammar;
-  grammar.r = prepared.surface.r();
-  grammar.eps = prepared.surface.eps();
-  grammar.exemplar = prepared.model.mesh;
-  grammar.context_free = dg::build_context_free_grammar(prepared, dg::find_docking_sites(prepared, symmetries), {});
-  for (dg::GridRule& rule : dg::find_grids(prepared, symmetries)) {
-    auto pieces = dg::cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
-    grammar.grids.push_back({std::move(rule), std::move(pieces)});
-  }
+  const dg::ShapeGrammar grammar = dg::test::asset_grammar("facade", {{"columns", 3}, {"rows", 4}}, true);
   REQUIRE(!grammar.context_free.empty());
   REQUIRE(window_sizes(grammar.exemplar, depth).size() == 12);
 

@@ -4,6 +4,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/errors.h"
 #include "geometry/topology.h"
+#include "support/asset_grammar.h"
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"
 
@@ -17,21 +18,7 @@
 
 namespace {
 
-dg::ShapeGrammar facade_grammar() {
-  dg::Model model;
-  model.mesh = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
-  dg::ShapeGrammar grammar;
-  grammar.r = prepared.surface.r();
-  grammar.eps = prepared.surface.eps();
-  grammar.exemplar = prepared.model.mesh;
-  for (dg::GridRule& rule : dg::find_grids(prepared, symmetries)) {
-    auto pieces = dg::cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
-    grammar.grids.push_back({std::move(rule), std::move(pieces)});
-  }
-  return grammar;
-}
+dg::ShapeGrammar facade_grammar() { return dg::test::asset_grammar("facade", {{"columns", 3}, {"rows", 4}}, false); }
 
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
