@@ -53,8 +53,9 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
       if (model.mesh.triangles.empty()) throw InputError("no triangles left after dropping degenerate ones");
       // A fan edge that skips a vertex of the neighbouring face leaves a crack that exists only in
       // the topology; as an open edge it would become a feature line that breaks symmetries.
-      prepared.cleaning.t_junctions_split =
-          resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
+      if (prepared.cleaning.boundary_edges > 0)
+        prepared.cleaning.t_junctions_split =
+            resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
       prepared.timings.push_back({"clean", clock.lap()});
       report_progress(progress, "feature lines", 0.0);
       prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees);
