@@ -74,7 +74,8 @@ class SlabCells {
 };
 
 // The best chain of cut planes for one translation or screw motion: the longest run of planes,
-// each crossing only r-symmetric cells (and the last only images of them), whose slabs are
+// each crossing only r-symmetric cells (the last only images of them; the first also symmetric
+// cells whose nearby asymmetry lies on one side of it) and none holding a face, whose slabs are
 // symmetric. A screw moves every plane across its axis by its slide along the axis, so its
 // planes are those perpendicular to the axis, `slide` apart.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
@@ -183,16 +184,17 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       clearance = std::min(clearance, first_plane.clearance(first));
       for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
       clearance = std::min(clearance, backward.clearance(first + count * pitch));
-      // Among equally clear runs: the smallest seams (fewest surface cells crossed: between the
-      // stakes of a gate rather than through them), then planes through existing vertices.
+      // Ranking: more units; then more clearance (beyond rounding); then the smallest seams (fewest
+      // surface cells crossed by the planes); then planes through more existing vertices.
       std::size_t crossed = 0;
       for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-      const bool same_clearance = clearance > best_clearance - 1e-12 && clearance < best_clearance + 1e-12;
-      const bool better = !best || count > best->count ||
-                          (count == best->count &&
-                           (clearance > best_clearance + 1e-12 ||
-                            (same_clearance && (crossed < best_crossed || (crossed == best_crossed && vertices > best_vertices)))));
-      if (better) {
+      auto better = [&] {
+        if (!best || count != best->count) return !best || count > best->count;
+        if (std::abs(clearance - best_clearance) > 1e-12) return clearance > best_clearance;
+        if (crossed != best_crossed) return crossed < best_crossed;
+        return vertices > best_vertices;
+      };
+      if (better()) {
         // A translation's generator is kept exact (no rotation noise from the detector's fit).
         const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
         best = GridDirection{motion, t, d, pitch, first, count, symmetry_index};

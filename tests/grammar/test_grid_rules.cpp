@@ -2,6 +2,7 @@
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
+#include "support/corpus.h"
 
 #include <catch2/catch.hpp>
 
@@ -110,8 +111,7 @@ TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][gr
 }
 
 TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster pitch", "[grammar][grid][corpus]") {
-  const std::filesystem::path railing =
-      std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" / "arch-sh3d-railing" / "railing.obj";
+  const std::filesystem::path railing = dg::test::corpus_file("meshes/arch-sh3d-railing/railing.obj");
   if (!std::filesystem::exists(railing)) {
     WARN("corpus not found at " << railing.string() << ": corpus check skipped");
     return;
@@ -127,8 +127,7 @@ TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster p
 }
 
 TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with one unit per gap", "[grammar][grid][corpus]") {
-  const std::filesystem::path gate = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" /
-                                     "arch-kenney-castle-metalgate" / "metal_gate.obj";
+  const std::filesystem::path gate = dg::test::corpus_file("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
   if (!std::filesystem::exists(gate)) {
     WARN("corpus not found at " << gate.string() << ": corpus check skipped");
     return;

@@ -5,6 +5,7 @@
 #include "synthesis/verify.h"
 
 #include "grammar/grid_rules.h"
+#include "support/corpus.h"
 #include "support/mesh_distance.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -43,8 +44,7 @@ std::vector<double> baluster_positions(const dg::TriangleMesh& mesh) {
 }  // namespace
 
 TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one baluster and one pitch", "[synthesis][grid][corpus]") {
-  const std::filesystem::path railing =
-      std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes" / "arch-sh3d-railing" / "railing.obj";
+  const std::filesystem::path railing = dg::test::corpus_file("meshes/arch-sh3d-railing/railing.obj");
   if (!std::filesystem::exists(railing)) {
     WARN("corpus not found at " << railing.string() << ": corpus resize check skipped");
     return;
