@@ -63,8 +63,16 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
     } else {  // a alone: one triangle on its side, two on the other
       const std::uint32_t ab = crossing(a, b), ca = crossing(c, a);
       out.triangles.push_back({a, ab, ca});
-      out.triangles.push_back({ab, b, c});
-      out.triangles.push_back({ab, c, ca});
+      // The quad ab, b, c, ca is split by the diagonal from the higher-indexed of b and c, so a
+      // back-to-back duplicate (the same corners in the other order) is split the same way and
+      // stays an exact duplicate.
+      if (c > b) {
+        out.triangles.push_back({ab, b, c});
+        out.triangles.push_back({ab, c, ca});
+      } else {
+        out.triangles.push_back({ab, b, ca});
+        out.triangles.push_back({b, c, ca});
+      }
     }
   }
   return out;

@@ -200,22 +200,32 @@ class Matcher {
       if (d <= r_ && candidate_index_.near_any_of(near[i].position, tolerances_.tolerance, part)) nearest.emplace_back(d, i);
     }
     std::sort(nearest.begin(), nearest.end());
-    // Both tangent directions of one feature sample count as one anchor.
+    const double tolerance = options_.dihedral_tolerance_degrees;
+    auto compatible = [&](const Anchor& c, const Anchor& e) {
+      return e.descriptor.boundary == c.descriptor.boundary &&
+             std::abs(e.descriptor.dihedral_degrees - c.descriptor.dihedral_degrees) <= tolerance;
+    };
+    // The exemplar anchors whose dihedral key lies within the tolerance of c's.
+    auto candidates_for = [&](const Anchor& c) {
+      const auto begin = std::lower_bound(far.begin(), far.end(), std::round(c.descriptor.dihedral_degrees - tolerance),
+                                          [](const Anchor& a, double value) { return dihedral_key(a) < value; });
+      auto end = begin;
+      while (end != far.end() && dihedral_key(*end) <= std::round(c.descriptor.dihedral_degrees + tolerance)) ++end;
+      return std::make_pair(begin, end);
+    };
+    // Both tangent directions of one feature sample count as one anchor. Anchors without any
+    // compatible exemplar anchor (a feature the exemplar lacks, e.g. a non-manifold seam of
+    // coplanar faces) are passed over, so they do not use up the nearest-anchor budget.
     std::size_t used = 0;
     Vec3 last = Vec3::Constant(std::numeric_limits<double>::infinity());
     for (const auto& [d, i] : nearest) {
       const Anchor& c = near[i];
+      const auto [begin, end] = candidates_for(c);
+      if (std::none_of(begin, end, [&](const Anchor& e) { return compatible(c, e); })) continue;
       if (c.position != last && ++used > options_.anchors) break;
       last = c.position;
-      const double tolerance = options_.dihedral_tolerance_degrees;
-      const double lo = std::round(c.descriptor.dihedral_degrees - tolerance);
-      auto e = std::lower_bound(far.begin(), far.end(), lo,
-                                [](const Anchor& a, double value) { return dihedral_key(a) < value; });
-      for (; e != far.end() && dihedral_key(*e) <= std::round(c.descriptor.dihedral_degrees + tolerance); ++e)
-        if (e->descriptor.boundary == c.descriptor.boundary &&
-            std::abs(e->descriptor.dihedral_degrees - c.descriptor.dihedral_degrees) <= tolerance &&
-            attempt(align(c, *e)))
-          return true;
+      for (auto e = begin; e != end; ++e)
+        if (compatible(c, *e) && attempt(align(c, *e))) return true;
     }
     return false;
   }

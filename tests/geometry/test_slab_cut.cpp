@@ -1,0 +1,41 @@
+// Cutting meshes along parallel planes (grid pieces).
+
+#include "geometry/slab_cut.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+namespace {
+
+std::set<std::array<std::uint32_t, 3>> vertex_sets(const std::vector<dg::Triangle>& triangles) {
+  std::set<std::array<std::uint32_t, 3>> sets;
+  for (dg::Triangle t : triangles) {
+    std::sort(t.begin(), t.end());
+    sets.insert({t[0], t[1], t[2]});
+  }
+  return sets;
+}
+
+}  // namespace
+
+TEST_CASE("cutting a back-to-back double face splits both faces alike", "[geometry][slab_cut]") {
+  // Both orders of the corners, and both ways round the two far corners' indices.
+  for (const bool far_corners_swapped : {false, true}) {
+    CAPTURE(far_corners_swapped);
+    dg::TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}};
+    if (far_corners_swapped) std::swap(mesh.positions[1], mesh.positions[2]);
+    mesh.triangles = {{0, 1, 2}, {0, 2, 1}};
+    // The plane x = 1 leaves corner 0 alone on its side: each face becomes a triangle and a quad
+    // split in two.
+    const dg::TriangleMesh cut = dg::cut_along_planes(mesh, dg::Vec3::UnitX(), {1.0}, 1e-9);
+    REQUIRE(cut.triangles.size() == 6);
+    const std::vector<dg::Triangle> front(cut.triangles.begin(), cut.triangles.begin() + 3);
+    const std::vector<dg::Triangle> back(cut.triangles.begin() + 3, cut.triangles.end());
+    CHECK(vertex_sets(front) == vertex_sets(back));
+    CHECK(cut.area() == Approx(mesh.area()).epsilon(1e-12));
+  }
+}
