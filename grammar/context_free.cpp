@@ -7,6 +7,7 @@
 #include "grammar/seam_curve.h"
 #include "grammar/seam_cut.h"
 #include "grammar/random.h"
+#include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
 
 #include <Eigen/Eigenvalues>
@@ -18,7 +19,6 @@
 #include <map>
 #include <numeric>
 #include <optional>
-#include <set>
 #include <unordered_map>
 
 namespace dg {
@@ -127,35 +127,6 @@ bool orient_towards_docker(const VoxelSurface& surface, const Node& node, const 
     std::swap(positive, negative);
   }
   return positive >= 0.8 * static_cast<double>(total);
-}
-
-// Random maximal independent sets of the conflict graph over `items` (paper: a random start,
-// then random nodes added while they conflict with none chosen), distinct, trial order.
-std::vector<std::vector<std::size_t>> independent_sets(const std::vector<std::size_t>& items,
-                                                       const std::vector<std::vector<char>>& conflict, int trials,
-                                                       Random& random) {
-  std::vector<std::vector<std::size_t>> sets;
-  if (items.empty()) return {{}};
-  std::set<std::vector<std::size_t>> seen;
-  for (int trial = 0; trial < trials; ++trial) {
-    std::vector<std::size_t> order(items.size());
-    std::iota(order.begin(), order.end(), 0);
-    for (std::size_t i = order.size(); i > 1; --i)
-      std::swap(order[i - 1], order[static_cast<std::size_t>(random.uniform() * static_cast<double>(i))]);
-    const std::size_t start = static_cast<std::size_t>(trial) % items.size();
-    std::rotate(order.begin(), std::find(order.begin(), order.end(), start), order.end());
-    std::vector<std::size_t> chosen;
-    for (std::size_t i : order) {
-      bool free = true;
-      for (std::size_t j : chosen) free = free && !conflict[i][j];
-      if (free) chosen.push_back(i);
-    }
-    std::vector<std::size_t> set;
-    for (std::size_t i : chosen) set.push_back(items[i]);
-    std::sort(set.begin(), set.end());
-    if (seen.insert(set).second) sets.push_back(set);
-  }
-  return sets;
 }
 
 // Every vertex of `a` lies within `tolerance` (model units) of a vertex of `b`.
@@ -498,17 +469,10 @@ class Builder {
     }
   }
 
-  std::vector<std::vector<char>> conflicts(const std::vector<std::size_t>& items) const {
-    std::vector<std::vector<char>> conflict(items.size(), std::vector<char>(items.size(), 0));
-    for (std::size_t i = 0; i < items.size(); ++i)
-      for (std::size_t j = i + 1; j < items.size(); ++j) {
-        const Node& a = nodes_[items[i]];
-        const Node& b = nodes_[items[j]];
-        const bool clash = share_a_cell(a.site, b.site) || share_a_cell(a.docker, b.docker) ||
-                           share_a_cell(a.site, b.docker) || share_a_cell(a.docker, b.site);
-        conflict[i][j] = conflict[j][i] = clash;
-      }
-    return conflict;
+  // Two sites conflict when their sites or dockers share a cell.
+  static bool clash(const Node& a, const Node& b) {
+    return share_a_cell(a.site, b.site) || share_a_cell(a.docker, b.docker) || share_a_cell(a.site, b.docker) ||
+           share_a_cell(a.docker, b.site);
   }
 
   // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`, in
@@ -602,10 +566,17 @@ class Builder {
                      [&](std::size_t a, std::size_t b) { return nodes_[a].docker.size() < nodes_[b].docker.size(); });
     Random random(options_.seed);
     docker_area_.assign(nodes_.size(), 0.0);
+    // A node's candidate children: its kept children and, unfolded one level, theirs.
+    auto unfolded = [&](const std::vector<std::size_t>& children) {
+      return unfold_one_level(
+          children, [&](std::size_t c) { return kept_only(nodes_[c].children); },
+          [&](std::size_t a, std::size_t b) { return clash(nodes_[a], nodes_[b]); });
+    };
     for (std::size_t i : order) {
-      const std::vector<std::size_t> children = kept_only(nodes_[i].children);
+      const UnfoldedChildren candidates = unfolded(kept_only(nodes_[i].children));
       docker_area_[i] = piece_area(nodes_[i].piece);
-      for (const auto& set : independent_sets(children, conflicts(children), options_.independent_set_trials, random)) {
+      for (const auto& set :
+           random_independent_sets(candidates.items, candidates.conflict, options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
         if (!adds_up(p, set, docker_area_[i])) continue;
         std::size_t index = grammar.productions.size();
@@ -616,8 +587,8 @@ class Builder {
       }
       if (nodes_[i].first_production == kNoProduction) nodes_[i].kept = false;
     }
-    const std::vector<std::size_t> roots = kept_only(roots_);
-    const std::vector<std::size_t> axiom_children = independent_sets(roots, conflicts(roots), 1, random).front();
+    const UnfoldedChildren roots = unfolded(kept_only(roots_));
+    const std::vector<std::size_t> axiom_children = random_independent_sets(roots.items, roots.conflict, 1, random).front();
     grammar.axiom = production(kNone, axiom_children);
     if (!adds_up(grammar.axiom, axiom_children, mesh_.area())) grammar.axiom = production(kNone, {});
   }

@@ -7,7 +7,8 @@
 // non-terminal's own frame (that of its first node) onto the node. Nodes form an inclusion
 // tree (a node is a child of the smallest docker holding its band and docker). For each node,
 // randomly sampled maximal independent sets of its non-conflicting children (sites sharing
-// cells or dockers overlapping conflict) give productions
+// cells or dockers overlapping conflict), with one hierarchy level unfolded (a child left out
+// for a conflict lets its own children in; grammar/site_conflicts.h), give productions
 //     node's non-terminal -> terminal remainder + child non-terminals,
 // stored in the non-terminal's frame; the whole model is the axiom.
 //
