@@ -145,7 +145,9 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
       directions.push_back({{"translation", {d.translation.x(), d.translation.y(), d.translation.z()}},
                             {"pitch", d.pitch},
                             {"cut", d.cut},
-                            {"count", d.count}});
+                            {"count", d.count},
+                            {"head_units", d.head_units},
+                            {"tail_units", d.tail_units}});
       transforms.push_back(matrix_json(d.motion.matrix()));
       counts.push_back(d.count);
     }
@@ -291,6 +293,13 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
       direction.direction = direction.translation / direction.translation.norm();
       direction.cut = field<double>(d, "cut", where);
       direction.count = field<int>(d, "count", where);
+      // Optional (files written before they existed: no unit kept in the head or tail).
+      if (d.contains("head_units")) direction.head_units = field<int>(d, "head_units", where);
+      if (d.contains("tail_units")) direction.tail_units = field<int>(d, "tail_units", where);
+      if (direction.count < 1 || direction.head_units < 0 || direction.tail_units < 0 ||
+          direction.head_units + direction.tail_units >= direction.count)
+        throw InputError(where + ": grid " + entry.rule.name +
+                         ": a direction needs count >= 1 and head_units + tail_units < count (both >= 0)");
       entry.rule.directions.push_back(direction);
     }
     // The generators: a translation by `translation`, or a screw whose slide is `translation`.

@@ -6,6 +6,7 @@
 #include "symmetry/symmetric_region.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -72,6 +73,64 @@ class SlabCells {
   std::vector<std::pair<double, int>> cells_;
   std::vector<std::size_t> asymmetric_before_;
 };
+
+// Relative difference of surface area below which two slabs count as equally large.
+constexpr double kSameSlabArea = 1e-4;
+
+// Area of triangle (s0 <= s1 <= s2: its corners' positions along a direction, `area` its
+// area) on the side s' <= s of the plane at s: quadratic in s on each side of s1.
+double area_below(double s0, double s1, double s2, double area, double s) {
+  if (s <= s0) return 0.0;
+  if (s >= s2) return area;
+  if (s <= s1) return area * (s - s0) * (s - s0) / ((s1 - s0) * (s2 - s0));
+  return area * (1.0 - (s2 - s) * (s2 - s) / ((s2 - s0) * (s2 - s1)));
+}
+
+// Surface area of `mesh` in each unit slab of `direction`: entry k - 1 for slab k = 1 .. count,
+// between the planes cut + (k - 1) pitch and cut + k pitch (model units^2).
+std::vector<double> unit_slab_areas(const TriangleMesh& mesh, const GridDirection& direction) {
+  std::vector<double> areas(static_cast<std::size_t>(direction.count), 0.0);
+  const Vec3& d = direction.direction;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    std::array<double, 3> s{d.dot(a), d.dot(b), d.dot(c)};
+    std::sort(s.begin(), s.end());
+    const double area = 0.5 * mesh.area_vector(t).norm();
+    const int first = std::max(1, static_cast<int>(std::floor((s[0] - direction.cut) / direction.pitch)) + 1);
+    const int last = std::min(direction.count, static_cast<int>(std::floor((s[2] - direction.cut) / direction.pitch)) + 1);
+    for (int k = first; k <= last; ++k) {
+      const double lo = direction.cut + (k - 1) * direction.pitch, hi = lo + direction.pitch;
+      areas[static_cast<std::size_t>(k - 1)] += area_below(s[0], s[1], s[2], area, hi) - area_below(s[0], s[1], s[2], area, lo);
+    }
+  }
+  return areas;
+}
+
+// Picks the repeated unit of a direction: the first slab of the longest run of slabs that are
+// exact copies of the next, judged by the voxel cells (no asymmetric cell strictly inside,
+// `half` the cells' half extent along the direction) and by the mesh (the same surface area,
+// which also tells back-to-back duplicate faces, invisible to the cells, apart). The slabs
+// before the run stay in the head and those after it in the tail, so damage in one unit (a fin,
+// a doubled face, a differing end stake) is placed once instead of copied. Without such a run
+// the first slab stays the unit.
+void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells, double half, const TriangleMesh& mesh) {
+  const std::vector<double> areas = unit_slab_areas(mesh, direction);
+  auto copies_next = [&](int k) {  // slab k equals slab k + 1
+    const double a = areas[static_cast<std::size_t>(k - 1)], b = areas[static_cast<std::size_t>(k)];
+    return slab_cells.count(direction.cut + (k - 1) * direction.pitch + half, direction.cut + k * direction.pitch - half).first == 0 &&
+           std::abs(a - b) <= kSameSlabArea * std::max(a, b);
+  };
+  int best_first = 0, best_last = -1;  // run of slabs k = first .. last, each equal to slab k + 1
+  for (int first = 1; first < direction.count;) {
+    int last = first - 1;
+    while (last + 1 < direction.count && copies_next(last + 1)) ++last;
+    if (last - first > best_last - best_first) best_first = first, best_last = last;
+    first = last + 2;
+  }
+  if (best_last < best_first) return;
+  direction.head_units = best_first - 1;
+  direction.tail_units = direction.count - (best_last + 1);
+}
 
 // The best chain of cut planes for one translation or screw motion: the longest run of planes,
 // each crossing only r-symmetric cells (the last only images of them; the first also symmetric
@@ -197,13 +256,14 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       if (better()) {
         // A translation's generator is kept exact (no rotation noise from the detector's fit).
         const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-        best = GridDirection{motion, t, d, pitch, first, count, symmetry_index};
+        best = GridDirection{motion, t, d, pitch, first, count, 0, 0, symmetry_index};
         best_clearance = clearance;
         best_vertices = vertices;
         best_crossed = crossed;
       }
     }
   }
+  if (best) choose_repeated_unit(*best, slab_cells, half, mesh);
   return best;
 }
 
@@ -220,10 +280,11 @@ bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
 
 }  // namespace
 
-int slab_class(std::size_t slab, int count) {
-  if (slab == 0) return 0;
-  if (slab == 1) return 1;
-  if (slab == static_cast<std::size_t>(count) + 1) return 2;
+int slab_class(std::size_t slab, const GridDirection& direction) {
+  const auto k = static_cast<int>(slab);
+  if (k <= direction.head_units) return 0;
+  if (k == direction.head_units + 1) return 1;
+  if (k > direction.count - direction.tail_units) return 2;
   return -1;
 }
 
@@ -308,7 +369,7 @@ std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule&
   for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
     std::vector<int> classes;
     for (std::size_t i = 0; i < grid.directions.size(); ++i) {
-      const int c = slab_class(grid_cut.slabs[t][i], grid.directions[i].count);
+      const int c = slab_class(grid_cut.slabs[t][i], grid.directions[i]);
       if (c < 0) break;
       classes.push_back(c);
     }

@@ -30,8 +30,17 @@ struct GridDirection {
   double pitch = 0.0;               ///< |t|
   double cut = 0.0;                 ///< offset of the first cut plane along direction
   int count = 0;                    ///< repeated units in the exemplar
+  /// Units of the exemplar kept in the head piece (before the repeated one) and in the tail piece
+  /// (after the last copy) because they differ a little from their neighbours (damage such as a
+  /// fin, an end stake): they are placed once, never copied. The repeated unit is slab
+  /// head_units + 1; a resize places it count - head_units - tail_units times.
+  int head_units = 0;
+  int tail_units = 0;
   std::size_t symmetry = 0;         ///< index of the generator in SymmetryResult::symmetries
 };
+
+/// Smallest count a direction accepts: the units its head and tail keep (no copy of the unit).
+inline int min_units(const GridDirection& direction) { return direction.head_units + direction.tail_units; }
 
 /// A k-grid: its directions (counts[i] belongs to directions[i]) and the allowed count range.
 struct GridRule {
@@ -57,10 +66,10 @@ struct GridOptions {
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options = {});
 
-/// Class of a slab along one direction: 0 = head (before the first plane), 1 = the repeated
-/// unit (the first slab after it), 2 = tail (after the last plane); -1 = a later unit (a copy,
-/// not stored).
-int slab_class(std::size_t slab, int count);
+/// Class of a slab along one direction (slab 0 lies before the first plane, slab count + 1 after
+/// the last): 0 = head (slabs 0 .. head_units), 1 = the repeated unit (slab head_units + 1),
+/// 2 = tail (the last tail_units units and slab count + 1); -1 = a copy of the unit, not stored.
+int slab_class(std::size_t slab, const GridDirection& direction);
 
 /// The mesh cut along every plane of a grid, with each triangle's slab along each direction:
 /// slabs[t][i] is 0 before the first plane of direction i, k after plane k-1 (k = 1 .. count

@@ -5,12 +5,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace dg {
 namespace {
 
 // Placements of the copies of `piece`: per direction, the identity for a head piece, the k-th
-// power of the generator (k = 0 .. count-1) for a unit piece, the power count - exemplar count
-// for a tail piece; the copies are all combinations (the generators of a grid commute).
+// power of the generator (k = 0 .. count - head and tail units - 1) for a unit piece, the power
+// count - exemplar count for a tail piece; the copies are all combinations (the generators of a
+// grid commute).
 std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
   std::vector<RigidTransform> placements{RigidTransform{}};
   for (std::size_t i = 0; i < grid.directions.size(); ++i) {
@@ -24,7 +27,7 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
     std::vector<RigidTransform> along;
     if (piece.classes[i] == 0) along.push_back(RigidTransform{});
     if (piece.classes[i] == 1)
-      for (int k = 0; k < counts[i]; ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
+      for (int k = 0; k < counts[i] - min_units(d); ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
     if (piece.classes[i] == 2) along.push_back(power(counts[i] - d.count));
     std::vector<RigidTransform> combined;
     for (const RigidTransform& a : placements)
@@ -41,10 +44,17 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   if (counts.size() != grid.directions.size())
     throw InputError(fmt::format("grid {} has {} direction(s) but {} count(s) were given", grid.name,
                                  grid.directions.size(), counts.size()));
-  for (std::size_t i = 0; i < counts.size(); ++i)
-    if (counts[i] < grid.min_count || counts[i] > grid.max_count)
-      throw InputError(fmt::format("grid {}: count {} is outside the allowed range {}..{}", grid.name, counts[i],
-                                   grid.min_count, grid.max_count));
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    const int lowest = std::max(grid.min_count, min_units(grid.directions[i]));
+    if (counts[i] < lowest || counts[i] > grid.max_count)
+      throw InputError(fmt::format("grid {}: count {} of direction {} is outside the allowed range {}..{}{}", grid.name,
+                                   counts[i], i + 1, lowest, grid.max_count,
+                                   lowest > grid.min_count
+                                       ? fmt::format(" (the exemplar's head and tail keep {} unit(s) that differ a little "
+                                                     "from the repeated one)",
+                                                     min_units(grid.directions[i]))
+                                       : ""));
+  }
   std::vector<std::vector<RigidTransform>> placements;
   std::size_t vertices = 0, triangles = 0;
   for (const GridPiece& piece : pieces) {

@@ -19,7 +19,8 @@ inline constexpr double kSeamWeldFraction = 1e-4;
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
 /// range) and welds vertices closer than `weld_tolerance` (model units). Counts equal to the
 /// grid's own counts reproduce the exemplar. Throws InputError when a count is out of range
-/// or the number of counts does not match the grid's dimension.
+/// (below a direction's min_units or the grid's range) or the number of counts does not match
+/// the grid's dimension.
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
                          double weld_tolerance);
 

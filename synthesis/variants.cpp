@@ -39,7 +39,7 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   for (const GridWithPieces& grid : grammar.grids) {
     std::vector<int> counts;
     for (const GridDirection& d : grid.rule.directions) {
-      const int lo = std::max({1, grid.rule.min_count, static_cast<int>(std::ceil(d.count / options.range_factor))});
+      const int lo = std::max({1, grid.rule.min_count, min_units(d), static_cast<int>(std::ceil(d.count / options.range_factor))});
       const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
       counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
     }

@@ -1,6 +1,7 @@
 #include "synthesis/grid_resize.h"
 
 #include "assets/generator/asset.h"
+#include "geometry/cleaning.h"
 #include "geometry/errors.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
@@ -69,6 +70,49 @@ TEST_CASE("resize facade(3 x 4) to 5 x 7 gives the generator's facade(5, 7)", "[
 }
 
 // A screw grid (spiral stairs): every added unit is the screw motion applied once more.
+TEST_CASE("messy facade: damaged rows stay in the head, so added rows are clean copies", "[synthesis][grid]") {
+  // The generator's damage (assets/generator/messy_facade.cpp: doubled faces, a non-manifold
+  // fin, slivers, spread by triangle index) makes the two lowest window rows differ from the
+  // rows above: they are kept once in the head and a clean row is the repeated unit. The clean
+  // facade keeps no unit in a head or tail.
+  const Grammar messy = grammar_of("messy_facade", {{"columns", 3}, {"rows", 4}});
+  const Grammar clean = grammar_of("facade", {{"columns", 3}, {"rows", 4}});
+  for (const dg::GridDirection& d : clean.grid.directions) CHECK(dg::min_units(d) == 0);
+  const auto own = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 4}});
+  const auto taller = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 7}});
+  const double weld = dg::kSeamWeldFraction * messy.eps;
+  dg::TriangleMesh exemplar_copy = dg::resize_grid(messy.grid, messy.pieces, own, weld);
+  dg::TriangleMesh taller_copy = dg::resize_grid(messy.grid, messy.pieces, taller, weld);
+  const dg::CleaningReport own_damage = dg::clean_mesh(exemplar_copy);
+  const dg::CleaningReport taller_damage = dg::clean_mesh(taller_copy);
+  // Three more rows, and not one more doubled face or non-manifold edge.
+  CHECK(own_damage.duplicate_triangles > 0);
+  CHECK(taller_damage.duplicate_triangles == own_damage.duplicate_triangles);
+  CHECK(taller_damage.non_manifold_edges == own_damage.non_manifold_edges);
+  CHECK(taller_copy.bounds().size().z() == Approx(exemplar_copy.bounds().size().z() + 9.0).margin(1e-6));
+  // The rows cannot shrink below the two kept rows.
+  const auto too_low = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 1}});
+  CHECK_THROWS_AS(dg::resize_grid(messy.grid, messy.pieces, too_low, weld), dg::InputError);
+
+  // The kept units survive the grammar file.
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-kept-units-test");
+  dg::ShapeGrammar grammar;
+  grammar.source_name = "messy_facade_3x4.obj";
+  grammar.source_hash = "0";
+  grammar.r = 4 * messy.eps;
+  grammar.eps = messy.eps;
+  grammar.exemplar = exemplar_copy;
+  grammar.grids.push_back({messy.grid, messy.pieces});
+  dg::write_grammar(folder / "messy.grammar.json", grammar);
+  const dg::ShapeGrammar read = dg::read_grammar(folder / "messy.grammar.json");
+  REQUIRE(read.grids.size() == 1);
+  for (std::size_t i = 0; i < messy.grid.directions.size(); ++i) {
+    CHECK(read.grids[0].rule.directions[i].head_units == messy.grid.directions[i].head_units);
+    CHECK(read.grids[0].rule.directions[i].tail_units == messy.grid.directions[i].tail_units);
+  }
+  std::filesystem::remove_all(folder);
+}
+
 TEST_CASE("resize spiral stairs(12) to 16 steps gives the generator's stairs(16)", "[synthesis][grid]") {
   const Grammar g = grammar_of("spiral_stairs", {{"steps", 12}});
   REQUIRE(g.grid.directions.size() == 1);

@@ -19,6 +19,17 @@ constexpr const char* kMissing =
     "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
 
 // A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
+// A note on the units a direction keeps once in its head and tail, e.g. " (1 unit kept once in
+// the head: it differs a little from the repeated unit)"; empty when it keeps none.
+std::string kept_units_text(const GridDirection& d) {
+  if (min_units(d) == 0) return "";
+  auto units = [](int n) { return fmt::format("{} unit{}", n, n == 1 ? "" : "s"); };
+  std::string kept;
+  if (d.head_units > 0) kept = units(d.head_units) + " kept once in the head";
+  if (d.tail_units > 0) kept += kept.empty() ? units(d.tail_units) + " kept once in the tail" : fmt::format(" and {} in the tail", d.tail_units);
+  return fmt::format(" ({}: {} a little from the repeated unit)", kept, min_units(d) == 1 ? "it differs" : "they differ");
+}
+
 std::string grid_motion_text(const GridDirection& d) {
   return describe_motion(d.motion, d.motion.angle() > 1e-9 ? "screw" : "translation");
 }
@@ -128,8 +139,8 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
     for (const GridDirection& d : grid.rule.directions)
-      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} units, first cut at {:.6g}\n", grid_motion_text(d),
-                         vec(d.direction), d.pitch, d.count, d.cut);
+      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} units, first cut at {:.6g}{}\n", grid_motion_text(d),
+                         vec(d.direction), d.pitch, d.count, d.cut, kept_units_text(d));
   }
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
@@ -190,15 +201,20 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
   md += "```\n\n## Grid rules\n\n";
   if (report.grammar.grids.empty()) md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric area).\n\n";
   for (const GridWithPieces& grid : report.grammar.grids) {
-    md += fmt::format("### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut |\n|---|---|---|---|---|\n",
-                      grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
+    md += fmt::format(
+        "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",
+        grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
-      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} |\n", i + 1, grid_motion_text(d), d.pitch, d.count, d.cut);
+      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d), d.pitch, d.count, d.cut,
+                        d.head_units + 1, kept_units_text(d));
     }
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
     for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
-    md += fmt::format("\nAllowed counts per direction: {}..{}. Picture: `{}.png`.\n\n", grid.rule.min_count, grid.rule.max_count,
+    std::string minimums;
+    for (const GridDirection& d : grid.rule.directions)
+      minimums += fmt::format("{}{}", minimums.empty() ? "" : ", ", std::max(grid.rule.min_count, min_units(d)));
+    md += fmt::format("\nAllowed counts per direction: from {} up to {}. Picture: `{}.png`.\n\n", minimums, grid.rule.max_count,
                       path.stem().stem().string() + "." + grid.rule.name);
   }
   md += context_free_markdown(report);
@@ -246,7 +262,7 @@ void write_analysis_pictures(const std::filesystem::path& folder, const std::str
       std::size_t class_index = 0, parity = 0;
       for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
         const std::size_t slab = grid_cut.slabs[t][i];
-        const int cls = slab_class(slab, grid.rule.directions[i].count);
+        const int cls = slab_class(slab, grid.rule.directions[i]);
         class_index = 3 * class_index + static_cast<std::size_t>(cls < 0 ? 1 : cls);
         if (cls != 0 && cls != 2) parity += slab;
       }
