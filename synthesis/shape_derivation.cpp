@@ -4,6 +4,7 @@
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "grammar/random.h"
+#include "grammar/seam_curve.h"
 #include "synthesis/piece_collision.h"
 
 #include <algorithm>
@@ -137,9 +138,10 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
       accepted.emplace(original, transformed(grammar.productions[original].terminal, slot.world));
     }
     result.productions.push_back(accepted->first);
+    result.changed = result.changed || accepted->first != slot.slot.original_production;
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
-  if (options.weld_seams) resolve_t_junctions(result.mesh, 1e-6 * eps, &seam_vertices);
+  if (options.weld_seams) resolve_t_junctions(result.mesh, kSeamFitFraction * eps, &seam_vertices);
   return result;
 }
 

@@ -32,6 +32,7 @@ struct ShapeDerivationOptions {
 struct ShapeDerivation {
   TriangleMesh mesh;                        ///< welded at the seams
   std::vector<std::size_t> productions;     ///< applied productions (indices), in placement order
+  bool changed = false;                     ///< some slot took another production than the exemplar's
   std::size_t collisions_retried = 0;       ///< random choices rejected for colliding
   std::size_t fallbacks = 0;                ///< slots that got the exemplar production after `retries` failures
   bool depth_limited = false;               ///< max_depth was reached somewhere

@@ -51,9 +51,17 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options) {
   Variant variant;
   if (plan.context_free) {
+    // A derivation that keeps every slot's own production rebuilds the exemplar, which is no
+    // variant: up to kRedraws further seeds derived from the variant's are tried for a changed
+    // one (when the grammar has a choice at all), so the result still depends only on the plan.
+    constexpr std::uint64_t kRedraws = 8;
     ShapeDerivationOptions derivation = options.derivation;
-    derivation.seed = plan.seed;
-    variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
+    const bool can_change = derivation_has_choice(grammar.context_free, derivation);
+    for (std::uint64_t draw = 0; draw <= kRedraws; ++draw) {
+      derivation.seed = draw == 0 ? plan.seed : variant_seed(plan.seed, draw);
+      variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
+      if (variant.derivation.changed || !can_change) break;
+    }
     variant.mesh = std::move(variant.derivation.mesh);
     return variant;
   }

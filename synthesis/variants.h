@@ -42,7 +42,9 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 /// Plans variant `index`. Throws InputError when the grammar has no rules of the requested kind.
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 
-/// Builds the mesh of a planned variant.
+/// Builds the mesh of a planned variant. A context-free derivation that happens to keep every
+/// slot's exemplar production is drawn again (up to 8 times, with seeds derived from the plan's),
+/// so variants differ from the exemplar whenever the grammar offers a choice.
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -87,3 +87,21 @@ TEST_CASE("generate CLI: same seed, same files; different seed, different files"
   CHECK(WEXITSTATUS(status) == 2);
   std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("context-free variants are never the unchanged exemplar when the grammar offers a choice", "[synthesis][variants]") {
+  // Upright, the facade's context-free rules can only add window rows (its other alternatives
+  // turn windows on their side), so a plain random derivation often keeps every slot's own
+  // production; such draws are repeated with derived seeds.
+  const dg::ShapeGrammar grammar = dg::test::asset_grammar("facade", {{"columns", 3}, {"rows", 4}}, true);
+  dg::VariantOptions options;
+  options.rules = dg::VariantRules::context_free;
+  options.derivation.up = dg::Vec3::UnitZ();
+  REQUIRE(dg::derivation_has_choice(grammar.context_free, options.derivation));
+  const double exemplar_area = grammar.exemplar.area();
+  for (std::uint64_t i = 0; i < 8; ++i) {
+    CAPTURE(i);
+    const dg::Variant variant = dg::build_variant(grammar, dg::plan_variant(grammar, 11, i, options), options);
+    CHECK(variant.derivation.changed);
+    CHECK(std::abs(variant.mesh.area() - exemplar_area) > 1e-3 * exemplar_area);
+  }
+}

@@ -128,6 +128,17 @@ std::string context_free_markdown(const AnalysisReport& report) {
   return md + "\n";
 }
 
+// Which rules `generate` uses by default (upright orientation about the grammar's up axis).
+std::string generate_rules_text(const AnalysisReport& report) {
+  ShapeDerivationOptions upright;
+  upright.up = picture_options(report.grammar.exemplar, report.grammar.up_axis).camera.up.normalized();
+  if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
+  if (report.grammar.grids.empty())
+    return "none changes the model while keeping its pieces upright: generate --orientation free uses them";
+  return "none changes the model while keeping its pieces upright, so generate varies the grid; --orientation free "
+         "--rules context-free uses them";
+}
+
 }  // namespace
 
 std::string analysis_text(const AnalysisReport& report) {
@@ -150,8 +161,8 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam)\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit);
   else
-    out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom (generate makes random variants)\n",
-                       cf.nonterminals.size(), cf.productions.size());
+    out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
+                       cf.productions.size(), generate_rules_text(report));
   out += fmt::format("grammar written to {}\nnot built: {}\n", report.grammar_path.string(), kMissing);
   return out;
 }
