@@ -1,7 +1,8 @@
 #pragma once
 // Grid rules (paper 001 §3.4.3) for translational repetitions and screw motions: a k-grid cuts
 // the model by k families of parallel planes into corner, border and interior pieces; resizing
-// places the head piece of a direction once, the repeated unit N times and the tail piece once.
+// to N units places the head piece of a direction once, the repeated unit N - (units the head
+// and tail keep) times and the tail piece once.
 // A screw (spiral stairs) cuts along planes perpendicular to its axis, its slide apart, and
 // forms a 1-grid of its own (it commutes only with motions along its axis).
 //
