@@ -12,6 +12,14 @@ namespace dg {
 
 using Segment = std::array<Vec3, 2>;
 
+/// How far apart (fraction of the voxel size eps) two seam curves may lie and still fit, and
+/// how close seam vertices of derived pieces are welded. Seams placed by fitted motions agree
+/// only up to the float32 rounding of the source coordinates (the Kenney building-small-c:
+/// 1e-8 to 7e-8 model units, up to 1e-5 eps), so 1e-6 eps rejected sites that fit; features on
+/// a seam are far larger (eps / 100 and up). The same fraction welds grid seams
+/// (kSeamWeldFraction).
+inline constexpr double kSeamFitFraction = 1e-4;
+
 /// For every triangle corner k of `mesh`, the triangle across edge (k, k+1), or -1 when that
 /// edge is used by one triangle only or by more than two.
 std::vector<std::int64_t> triangles_across(const TriangleMesh& mesh);
