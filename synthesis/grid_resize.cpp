@@ -50,9 +50,9 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
       throw InputError(fmt::format("grid {}: count {} of direction {} is outside the allowed range {}..{}{}", grid.name,
                                    counts[i], i + 1, lowest, grid.max_count,
                                    lowest > grid.min_count
-                                       ? fmt::format(" (the exemplar's head and tail keep {} unit(s) that differ a little "
+                                       ? fmt::format(" (the exemplar's head and tail keep {} unit{} that differ a little "
                                                      "from the repeated one)",
-                                                     min_units(grid.directions[i]))
+                                                     min_units(grid.directions[i]), min_units(grid.directions[i]) == 1 ? "" : "s")
                                        : ""));
   }
   std::vector<std::vector<RigidTransform>> placements;

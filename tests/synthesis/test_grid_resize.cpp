@@ -215,3 +215,20 @@ TEST_CASE("resize CLI: unknown grid or count out of range exits 2 and writes not
   CHECK(std::filesystem::exists(out));
   std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("resize CLI: a count below the units a grid's head keeps exits 2 and says why", "[synthesis][grid]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-resize-kept-test");
+  const dg::test::AnalyzedModel messy = dg::test::analyze_model("messy_facade_3x4", folder);
+  REQUIRE(messy.run.status == 0);
+  std::ifstream report(folder / "messy_facade_3x4.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("2 units kept once in the head") != std::string::npos);
+  CHECK(text.find("direction 1: 2..1000") != std::string::npos);
+  const std::string out = (folder / "out.obj").string();
+  const dg::test::CliRun low = dg::test::run_cli("resize " + messy.grammar.string() + " --grid grid1=1x3 -o " + out, folder);
+  CHECK(low.status == 2);
+  CHECK(low.output.find("head and tail keep 2 unit") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(dg::test::run_cli("resize " + messy.grammar.string() + " --grid grid1=2x3 -o " + out, folder).status == 0);
+  std::filesystem::remove_all(folder);
+}

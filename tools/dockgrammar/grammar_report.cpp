@@ -19,6 +19,9 @@ constexpr const char* kMissing =
     "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
 
 // A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
+// Smallest count direction i of `grid` accepts.
+int lowest_count(const GridRule& grid, std::size_t i) { return std::max(grid.min_count, min_units(grid.directions[i])); }
+
 // A note on the units a direction keeps once in its head and tail, e.g. " (1 unit kept once in
 // the head: it differs a little from the repeated unit)"; empty when it keeps none.
 std::string kept_units_text(const GridDirection& d) {
@@ -171,9 +174,11 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   nlohmann::json grids = nlohmann::json::array();
   for (const GridWithPieces& grid : report.grammar.grids) {
     nlohmann::json counts = nlohmann::json::array(), transforms = nlohmann::json::array(), pieces = nlohmann::json::array();
-    for (const GridDirection& d : grid.rule.directions) {
-      counts.push_back(d.count);
-      transforms.push_back(matrix_json(d.motion));
+    nlohmann::json lowest = nlohmann::json::array();
+    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
+      counts.push_back(grid.rule.directions[i].count);
+      transforms.push_back(matrix_json(grid.rule.directions[i].motion));
+      lowest.push_back(lowest_count(grid.rule, i));
     }
     for (const GridPiece& p : grid.pieces) pieces.push_back({{"name", piece_name(p.classes)}, {"triangles", p.mesh.triangles.size()}});
     grids.push_back({{"name", grid.rule.name},
@@ -181,6 +186,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
                      {"counts", counts},
                      {"transforms", transforms},
                      {"count_range", {grid.rule.min_count, grid.rule.max_count}},
+                     {"min_counts", lowest},
                      {"pieces", pieces}});
   }
   return {{"model", report.prepared.model.source_path},
@@ -222,11 +228,10 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
     }
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
     for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
-    std::string minimums;
-    for (const GridDirection& d : grid.rule.directions)
-      minimums += fmt::format("{}{}", minimums.empty() ? "" : ", ", std::max(grid.rule.min_count, min_units(d)));
-    md += fmt::format("\nAllowed counts per direction: from {} up to {}. Picture: `{}.png`.\n\n", minimums, grid.rule.max_count,
-                      path.stem().stem().string() + "." + grid.rule.name);
+    std::string ranges;
+    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
+      ranges += fmt::format("{}direction {}: {}..{}", i == 0 ? "" : ", ", i + 1, lowest_count(grid.rule, i), grid.rule.max_count);
+    md += fmt::format("\nAllowed counts: {}. Picture: `{}.png`.\n\n", ranges, path.stem().stem().string() + "." + grid.rule.name);
   }
   md += context_free_markdown(report);
   md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", kMissing);
