@@ -7,6 +7,39 @@
 
 namespace dg {
 
+namespace {
+
+// Whether item i was unfolded from another item (it holds kHeldBy in its row).
+bool unfolded_item(const ConflictMatrix& conflict, std::size_t i) {
+  return std::find(conflict[i].begin(), conflict[i].end(), kHeldBy) != conflict[i].end();
+}
+
+// Trial `trial`'s order of the item indices: shuffled, the top-level items (not unfolded) first,
+// starting at top-level item trial mod their count.
+std::vector<std::size_t> trial_order(const ConflictMatrix& conflict, int trial, Random& random) {
+  std::vector<std::size_t> order(conflict.size());
+  std::iota(order.begin(), order.end(), 0);
+  for (std::size_t i = order.size(); i > 1; --i)
+    std::swap(order[i - 1], order[static_cast<std::size_t>(random.uniform() * static_cast<double>(i))]);
+  const auto unfolded_from = std::stable_partition(order.begin(), order.end(),
+                                                   [&](std::size_t i) { return !unfolded_item(conflict, i); });
+  std::vector<std::size_t> top(order.begin(), unfolded_from);
+  std::sort(top.begin(), top.end());
+  const std::size_t start = top[static_cast<std::size_t>(trial) % top.size()];
+  std::rotate(order.begin(), std::find(order.begin(), unfolded_from, start), unfolded_from);
+  return order;
+}
+
+// Whether `children[c]` clashes with another of `children` (only such a child is unfolded).
+bool clashes_with_sibling(const std::vector<std::size_t>& children, std::size_t c,
+                          const std::function<bool(std::size_t, std::size_t)>& clash) {
+  for (std::size_t s = 0; s < children.size(); ++s)
+    if (s != c && clash(children[c], children[s])) return true;
+  return false;
+}
+
+}  // namespace
+
 std::vector<std::vector<std::size_t>> random_independent_sets(const std::vector<std::size_t>& items,
                                                               const ConflictMatrix& conflict, int trials,
                                                               Random& random) {
@@ -14,14 +47,8 @@ std::vector<std::vector<std::size_t>> random_independent_sets(const std::vector<
   std::vector<std::vector<std::size_t>> sets;
   std::set<std::vector<std::size_t>> seen;
   for (int trial = 0; trial < trials; ++trial) {
-    std::vector<std::size_t> order(items.size());
-    std::iota(order.begin(), order.end(), 0);
-    for (std::size_t i = order.size(); i > 1; --i)
-      std::swap(order[i - 1], order[static_cast<std::size_t>(random.uniform() * static_cast<double>(i))]);
-    const std::size_t start = static_cast<std::size_t>(trial) % items.size();
-    std::rotate(order.begin(), std::find(order.begin(), order.end(), start), order.end());
     std::vector<std::size_t> chosen;
-    for (std::size_t i : order) {
+    for (std::size_t i : trial_order(conflict, trial, random)) {
       bool free = true;
       for (std::size_t j : chosen) free = free && !conflict[i][j];
       if (free) chosen.push_back(i);
@@ -40,17 +67,20 @@ UnfoldedChildren unfold_one_level(const std::vector<std::size_t>& children,
   constexpr std::size_t kNoParent = std::numeric_limits<std::size_t>::max();
   UnfoldedChildren unfolded{children, {}};
   std::vector<std::size_t> parent(children.size(), kNoParent);  // per item: its parent's item index
-  for (std::size_t c = 0; c < children.size(); ++c)
+  for (std::size_t c = 0; c < children.size(); ++c) {
+    if (!clashes_with_sibling(children, c, clash)) continue;  // its own productions place its children
     for (std::size_t g : children_of(children[c])) {
       unfolded.items.push_back(g);
       parent.push_back(c);
     }
+  }
   const std::size_t n = unfolded.items.size();
-  unfolded.conflict.assign(n, std::vector<char>(n, 0));
+  unfolded.conflict.assign(n, std::vector<char>(n, kNoConflict));
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
-      const bool related = parent[j] == i || parent[i] == j;
-      unfolded.conflict[i][j] = unfolded.conflict[j][i] = related || clash(unfolded.items[i], unfolded.items[j]);
+      const bool clashing = parent[j] == i || parent[i] == j || clash(unfolded.items[i], unfolded.items[j]);
+      unfolded.conflict[i][j] = unfolded.conflict[j][i] = clashing ? kClash : kNoConflict;
+      if (parent[j] == i) unfolded.conflict[j][i] = kHeldBy;
     }
   return unfolded;
 }
