@@ -33,6 +33,10 @@ class PieceCollisions {
   /// Adds a placed piece to the set later pieces are checked against.
   void add(const TriangleMesh& piece);
 
+  /// collides(), then add() when it does not collide: one collision structure serves both.
+  /// Returns whether `piece` was added.
+  bool add_unless_collides(const TriangleMesh& piece, const SeamContact& at_seam);
+
   std::size_t pieces() const;
 
  private:

@@ -98,10 +98,10 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
   std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
   std::vector<std::vector<char>> open_of(grammar.productions.size() + 1);  // cache, filled on first use; the axiom last
   std::vector<char> open_known(grammar.productions.size() + 1, 0);
-  // Adds production `index` (the axiom for productions.size()) already moved to `world` as `piece`.
+  // Adds production `index` (the axiom for productions.size()) already moved to `world` as
+  // `piece` to the result; the caller has added `piece` to `collisions`.
   auto place = [&](std::size_t index, const RigidTransform& world, int depth, const TriangleMesh& piece) {
     const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
-    collisions.add(piece);
     if (!open_known[index]) open_of[index] = open_edge_vertices(p.terminal), open_known[index] = 1;
     seam_vertices.insert(seam_vertices.end(), open_of[index].begin(), open_of[index].end());
     append_mesh(result.mesh, piece);
@@ -109,6 +109,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     triangles += piece.triangles.size();
     for (const ChildSlot& c : p.children) open.push_back({c, world.after(c.placement), depth + 1});
   };
+  collisions.add(grammar.axiom.terminal);
   place(grammar.productions.size(), RigidTransform{}, 0, grammar.axiom.terminal);
 
   while (!open.empty()) {
@@ -125,7 +126,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
         const std::size_t pick = candidates[static_cast<std::size_t>(random.uniform() * static_cast<double>(candidates.size()))];
         const ShapeProduction& p = grammar.productions[pick];
         TriangleMesh piece = transformed(p.terminal, slot.world);
-        if (collisions.collides(piece, contact_of(grammar, p, slot.world, seam_tolerance))) {
+        if (!collisions.add_unless_collides(piece, contact_of(grammar, p, slot.world, seam_tolerance))) {
           ++result.collisions_retried;
           continue;
         }
@@ -136,6 +137,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     if (!accepted) {
       const std::size_t original = slot.slot.original_production;
       accepted.emplace(original, transformed(grammar.productions[original].terminal, slot.world));
+      collisions.add(accepted->second);
     }
     result.productions.push_back(accepted->first);
     result.changed = result.changed || accepted->first != slot.slot.original_production;
