@@ -1,7 +1,9 @@
 #include "grammar/context_free.h"
 
+#include "geometry/cleaning.h"
 #include "geometry/fragment_merge.h"
 #include "geometry/submesh.h"
+#include "geometry/topology.h"
 #include "geometry/zone_cut.h"
 #include "grammar/cell_sets.h"
 #include "grammar/seam_curve.h"
@@ -153,6 +155,18 @@ bool vertices_covered(const TriangleMesh& a, const TriangleMesh& b, double toler
   return true;
 }
 
+// Whether cleaning would drop a triangle of `mesh` as degenerate (corners collinear up to
+// rounding, see CleaningOptions): a piece holding one opens a hole wherever it is placed.
+bool has_degenerate_triangle(const TriangleMesh& mesh) {
+  const double tolerance = CleaningOptions{}.collinear_tolerance;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (b - a).cross(c - a).norm() <= tolerance * longest) return true;
+  }
+  return false;
+}
+
 // Equal up to `tolerance` (model units): same left side, same terminal triangles (compared by
 // count, area, bounding box and vertices) and the same child slots with the same exemplar
 // productions.
@@ -176,7 +190,10 @@ bool same_production(const ShapeProduction& a, const ShapeProduction& b, double 
 class Builder {
  public:
   Builder(const PreparedModel& prepared, const ContextFreeOptions& options)
-      : surface_(prepared.surface), mesh_(prepared.model.mesh), options_(options) {}
+      : surface_(prepared.surface),
+        mesh_(prepared.model.mesh),
+        options_(options),
+        exemplar_closed_(is_closed_and_oriented(mesh_)) {}
 
   ContextFreeGrammar build(const DockingSiteResult& sites, ContextFreeStats& stats) {
     collect_nodes(sites, stats);
@@ -378,7 +395,8 @@ class Builder {
   }
 
   // A docker cut at one location must fit the hole of every other location: the seam curve of
-  // each location, moved into the non-terminal's frame, must be that of its first location.
+  // each location, moved into the non-terminal's frame, must be that of its first location
+  // (within kSeamFitFraction of eps).
   void check_fit() {
     const std::vector<std::int64_t> across = triangles_across(cut_);
     std::vector<char> inside(cut_.triangles.size(), 0);
@@ -390,7 +408,7 @@ class Builder {
       for (Segment& s : segments) s = {back.apply(s[0]), back.apply(s[1])};
       return segments;
     };
-    const double tolerance = 1e-6 * surface_.eps();
+    const double tolerance = kSeamFitFraction * surface_.eps();
     for (const auto& members : class_nodes_) {
       const Node& root = nodes_[members.front()];
       const std::vector<Segment> reference = root.kept ? curve(root) : std::vector<Segment>{};
@@ -578,7 +596,7 @@ class Builder {
       for (const auto& set :
            random_independent_sets(candidates.items, candidates.conflict, options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
-        if (!adds_up(p, set, docker_area_[i])) continue;
+        if (!adds_up(p, set, docker_area_[i]) || opens_holes(p)) continue;
         std::size_t index = grammar.productions.size();
         for (std::size_t q = 0; q < grammar.productions.size() && index == grammar.productions.size(); ++q)
           if (same_production(grammar.productions[q], p, surface_.eps())) index = q;
@@ -590,8 +608,14 @@ class Builder {
     const UnfoldedChildren roots = unfolded(kept_only(roots_));
     const std::vector<std::size_t> axiom_children = random_independent_sets(roots.items, roots.conflict, 1, random).front();
     grammar.axiom = production(kNone, axiom_children);
-    if (!adds_up(grammar.axiom, axiom_children, mesh_.area())) grammar.axiom = production(kNone, {});
+    if (!adds_up(grammar.axiom, axiom_children, mesh_.area()) || opens_holes(grammar.axiom))
+      grammar.axiom = production(kNone, {});
+    if (opens_holes(grammar.axiom)) grammar = {};  // even the exemplar rebuilt from its pieces would have holes
   }
+
+  // Whether `p`'s terminal holds a triangle that cleaning drops while the exemplar is closed: it
+  // would open a hole in every result (verify requires closed results of closed exemplars).
+  bool opens_holes(const ShapeProduction& p) const { return exemplar_closed_ && has_degenerate_triangle(p.terminal); }
 
   // The terminal and the children's dockers make up the parent's docker (area within 0.1 %):
   // a cut that does not separate pieces cleanly is not used.
@@ -604,6 +628,7 @@ class Builder {
   const VoxelSurface& surface_;
   const TriangleMesh& mesh_;
   const ContextFreeOptions& options_;
+  bool exemplar_closed_;
   std::vector<Node> nodes_;
   std::vector<Relation> relations_;
   std::vector<std::vector<std::size_t>> class_nodes_;
