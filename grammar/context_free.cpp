@@ -206,7 +206,7 @@ class Builder {
     count_sites(stats);
     build_tree();
     ContextFreeGrammar grammar;
-    make_productions(grammar);
+    make_productions(grammar, stats);
     stats.nodes = 0;
     for (const Node& n : nodes_) stats.nodes += n.kept ? 1 : 0;
     return grammar;
@@ -554,7 +554,7 @@ class Builder {
     return area;
   }
 
-  void make_productions(ContextFreeGrammar& grammar) {
+  void make_productions(ContextFreeGrammar& grammar, ContextFreeStats& stats) {
     taken_.assign(cut_.triangles.size(), 0);
     // Non-terminals that survived, numbered densely.
     class_index_.assign(class_nodes_.size(), kNone);
@@ -596,7 +596,11 @@ class Builder {
       for (const auto& set :
            random_independent_sets(candidates.items, candidates.conflict, options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
-        if (!adds_up(p, set, docker_area_[i]) || opens_holes(p)) continue;
+        if (!adds_up(p, set, docker_area_[i])) continue;
+        if (opens_holes(p)) {
+          ++stats.productions_with_holes;
+          continue;
+        }
         std::size_t index = grammar.productions.size();
         for (std::size_t q = 0; q < grammar.productions.size() && index == grammar.productions.size(); ++q)
           if (same_production(grammar.productions[q], p, surface_.eps())) index = q;
@@ -610,7 +614,10 @@ class Builder {
     grammar.axiom = production(kNone, axiom_children);
     if (!adds_up(grammar.axiom, axiom_children, mesh_.area()) || opens_holes(grammar.axiom))
       grammar.axiom = production(kNone, {});
-    if (opens_holes(grammar.axiom)) grammar = {};  // even the exemplar rebuilt from its pieces would have holes
+    if (opens_holes(grammar.axiom)) {  // even the exemplar rebuilt from its pieces would have holes
+      grammar = {};
+      stats.axiom_with_holes = true;
+    }
   }
 
   // Whether `p`'s terminal holds a triangle that cleaning drops while the exemplar is closed: it

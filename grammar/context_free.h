@@ -80,6 +80,10 @@ struct ContextFreeStats {
   std::size_t sites_slippable = 0;   ///< dropped: the band slides along itself
   std::size_t sites_without_fit = 0;  ///< dropped: the docker cut at one location does not fit the other
   std::size_t nodes = 0;             ///< distinct site locations
+  /// Productions dropped because their piece holds a triangle cleaning drops (closed exemplars:
+  /// it would open a hole), and whether the axiom did too (then the grammar is left empty).
+  std::size_t productions_with_holes = 0;
+  bool axiom_with_holes = false;
 };
 
 /// Builds the context-free grammar of a prepared mesh from its docking sites. Deterministic

@@ -19,6 +19,15 @@ constexpr const char* kMissing =
     "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
 
 // A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
+// ", 12 productions whose pieces hold a triangle cleaning drops ..." when context-free rules
+// were dropped for opening holes in a closed model; empty otherwise.
+std::string holes_text(const ContextFreeStats& stats) {
+  if (stats.productions_with_holes == 0 && !stats.axiom_with_holes) return "";
+  return fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they would "
+                     "open holes in the closed model)",
+                     stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
+}
+
 // Smallest count direction i of `grid` accepts.
 int lowest_count(const GridRule& grid, std::size_t i) { return std::max(grid.min_count, min_units(grid.directions[i])); }
 
@@ -114,8 +123,9 @@ std::string context_free_markdown(const AnalysisReport& report) {
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }));
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
-                            "paper), {} have a docker that, cut at one location, does not fit the seam of the other.\n\n",
-                            report.context_free.sites_slippable, report.context_free.sites_without_fit);
+                            "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
+                            report.context_free.sites_slippable, report.context_free.sites_without_fit,
+                            holes_text(report.context_free));
   md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
@@ -161,8 +171,9 @@ std::string analysis_text(const AnalysisReport& report) {
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
                      ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
   if (cf.empty())
-    out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam)\n",
-                       report.context_free.sites_slippable, report.context_free.sites_without_fit);
+    out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
+                       report.context_free.sites_slippable, report.context_free.sites_without_fit,
+                       holes_text(report.context_free));
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
                        cf.productions.size(), generate_rules_text(report));
