@@ -229,6 +229,9 @@ TEST_CASE("resize CLI: a count below the units a grid's head keeps exits 2 and s
   CHECK(low.status == 2);
   CHECK(low.output.find("head and tail keep 2 unit") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
-  CHECK(dg::test::run_cli("resize " + messy.grammar.string() + " --grid grid1=2x3 -o " + out, folder).status == 0);
+  const dg::test::CliRun quiet = dg::test::run_cli("resize " + messy.grammar.string() + " --grid grid1=2x3 -q -o " + out, folder);
+  CHECK(quiet.status == 0);
+  CHECK(quiet.output.empty());
+  CHECK(std::filesystem::exists(out));
   std::filesystem::remove_all(folder);
 }

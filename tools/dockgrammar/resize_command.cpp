@@ -44,6 +44,7 @@ void add_resize_command(CLI::App& app) {
     std::vector<std::string> grids;
     std::string output;
     bool picture = false;
+    bool quiet = false;
     std::string up;
   };
   auto options = std::make_shared<Options>();
@@ -52,6 +53,7 @@ void add_resize_command(CLI::App& app) {
   command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction), repeatable")->required();
   command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb")->required();
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
+  command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
@@ -78,7 +80,7 @@ void add_resize_command(CLI::App& app) {
     if (options->picture)
       write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result, {}, {},
                          picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up));
-    fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
+    if (!options->quiet) fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
   });
 }
 
