@@ -291,14 +291,25 @@ ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const 
   for (std::size_t f = 0; f < families.size(); ++f) cutter.cut(pieces, families[f], f, wanted);
   ZoneCut out;
   std::vector<Vec3> positions = cutter.positions();
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    if (!zone[t]) add_conforming(mesh.triangles[t], cutter, positions, t, out);
-  for (const Piece& p : pieces) add_conforming(p.corners, cutter, positions, p.origin, out);
-  out.mesh.positions = std::move(positions);
-  std::vector<char> touched(mesh.positions.size(), 0);
+  std::vector<char> touched(mesh.positions.size(), 0);  // corners of zone triangles
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
     if (zone[t])
       for (std::uint32_t v : mesh.triangles[t]) touched[v] = 1;
+  out.mesh.triangles.reserve(mesh.triangles.size() + 3 * pieces.size());
+  out.origin.reserve(out.mesh.triangles.capacity());
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (zone[t]) continue;
+    // Only an edge shared with a zone triangle (both ends touched) can have gained vertices.
+    const Triangle& tri = mesh.triangles[t];
+    if (touched[tri[0]] + touched[tri[1]] + touched[tri[2]] < 2) {
+      out.mesh.triangles.push_back(tri);
+      out.origin.push_back(t);
+    } else {
+      add_conforming(tri, cutter, positions, t, out);
+    }
+  }
+  for (const Piece& p : pieces) add_conforming(p.corners, cutter, positions, p.origin, out);
+  out.mesh.positions = std::move(positions);
   merge_coincident(out, static_cast<std::uint32_t>(mesh.positions.size()), touched, tolerance);
   return out;
 }
