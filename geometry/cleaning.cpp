@@ -52,15 +52,6 @@ std::vector<std::uint32_t> compact_positions(std::vector<Vec3>& positions, const
   return new_index;
 }
 
-bool is_degenerate(const TriangleMesh& mesh, const Triangle& t, double tolerance) {
-  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
-  const Vec3& a = mesh.positions[t[0]];
-  const Vec3& b = mesh.positions[t[1]];
-  const Vec3& c = mesh.positions[t[2]];
-  const double longest_squared = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-  return (b - a).cross(c - a).norm() <= tolerance * longest_squared;
-}
-
 std::size_t count_duplicate_triangles(const std::vector<Triangle>& triangles) {
   std::vector<Triangle> keys(triangles);
   for (Triangle& key : keys) std::sort(key.begin(), key.end());
@@ -76,6 +67,16 @@ nlohmann::json bounds_json(const BoundingBox& box) {
 }
 
 }  // namespace
+
+bool nearly_collinear(const Vec3& a, const Vec3& b, const Vec3& c, double collinear_tolerance) {
+  const double longest_squared = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return (b - a).cross(c - a).norm() <= collinear_tolerance * longest_squared;
+}
+
+bool is_degenerate(const TriangleMesh& mesh, const Triangle& t, double collinear_tolerance) {
+  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
+  return nearly_collinear(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], collinear_tolerance);
+}
 
 CleaningReport clean_mesh(TriangleMesh& mesh, const CleaningOptions& options) {
   CleaningReport report;

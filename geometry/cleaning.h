@@ -46,6 +46,14 @@ struct CleaningReport {
   std::size_t t_junctions_split = 0;
 };
 
+/// Whether clean_mesh counts triangle t of `mesh` as degenerate: a repeated vertex index, or
+/// corners collinear within `collinear_tolerance` (see CleaningOptions).
+bool is_degenerate(const TriangleMesh& mesh, const Triangle& t, double collinear_tolerance = CleaningOptions{}.collinear_tolerance);
+
+/// The geometric part of that test for corners a, b, c: |(b - a) x (c - a)| <= tolerance * L^2,
+/// L the longest edge.
+bool nearly_collinear(const Vec3& a, const Vec3& b, const Vec3& c, double collinear_tolerance = CleaningOptions{}.collinear_tolerance);
+
 /// Cleans `mesh` in place: welds vertices with exactly equal positions (the first occurrence
 /// keeps its place; surviving vertices keep their relative order), drops degenerate triangles,
 /// then drops vertices no triangle uses. Triangle order is kept. Positions must be finite.

@@ -1,5 +1,7 @@
 #include "geometry/fragment_merge.h"
 
+#include "geometry/cleaning.h"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -117,9 +119,7 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
     if (f->info() % 2 == 0) continue;
     Triangle t;
     for (int k = 0; k < 3; ++k) t[k] = f->vertex(k)->info();
-    const double longest = std::max({(positions[t[1]] - positions[t[0]]).squaredNorm(), (positions[t[2]] - positions[t[1]]).squaredNorm(),
-                                     (positions[t[0]] - positions[t[2]]).squaredNorm()});
-    if (2.0 * area_of(positions, t) <= 1e-12 * longest) return false;  // a sliver that cleaning would drop
+    if (nearly_collinear(positions[t[0]], positions[t[1]], positions[t[2]])) return false;  // cleaning would drop it
     covered += area_of(positions, t);
     triangles.push_back(t);
   }

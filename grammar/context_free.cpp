@@ -155,16 +155,10 @@ bool vertices_covered(const TriangleMesh& a, const TriangleMesh& b, double toler
   return true;
 }
 
-// Whether cleaning would drop a triangle of `mesh` as degenerate (corners collinear up to
-// rounding, see CleaningOptions): a piece holding one opens a hole wherever it is placed.
+// Whether cleaning would drop a triangle of `mesh` as degenerate: a piece holding one opens a
+// hole wherever it is placed.
 bool has_degenerate_triangle(const TriangleMesh& mesh) {
-  const double tolerance = CleaningOptions{}.collinear_tolerance;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (b - a).cross(c - a).norm() <= tolerance * longest) return true;
-  }
-  return false;
+  return std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) { return is_degenerate(mesh, t); });
 }
 
 // Equal up to `tolerance` (model units): same left side, same terminal triangles (compared by
@@ -594,7 +588,7 @@ class Builder {
       const UnfoldedChildren candidates = unfolded(kept_only(nodes_[i].children));
       docker_area_[i] = piece_area(nodes_[i].piece);
       for (const auto& set :
-           random_independent_sets(candidates.items, candidates.conflict, options_.independent_set_trials, random)) {
+           random_independent_sets(candidates, options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
         if (!adds_up(p, set, docker_area_[i])) continue;
         if (opens_holes(p)) {
@@ -610,7 +604,7 @@ class Builder {
       if (nodes_[i].first_production == kNoProduction) nodes_[i].kept = false;
     }
     const UnfoldedChildren roots = unfolded(kept_only(roots_));
-    const std::vector<std::size_t> axiom_children = random_independent_sets(roots.items, roots.conflict, 1, random).front();
+    const std::vector<std::size_t> axiom_children = random_independent_sets(roots, 1, random).front();
     grammar.axiom = production(kNone, axiom_children);
     if (!adds_up(grammar.axiom, axiom_children, mesh_.area()) || opens_holes(grammar.axiom))
       grammar.axiom = production(kNone, {});

@@ -18,6 +18,7 @@
 #include "geometry/prepared_model.h"
 #include "symmetry/symmetry_detection.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,7 @@ struct GridDirection {
   std::size_t symmetry = 0;         ///< index of the generator in SymmetryResult::symmetries
 };
 
-/// Smallest count a direction accepts: the units its head and tail keep (no copy of the unit).
+/// Units of the exemplar a direction's head and tail keep: its count with no copy of the unit.
 inline int min_units(const GridDirection& direction) { return direction.head_units + direction.tail_units; }
 
 /// A k-grid: its directions (counts[i] belongs to directions[i]) and the allowed count range.
@@ -59,6 +60,12 @@ struct GridOptions {
   /// slivers) while a different part (a door where the next slab has a window) stays larger.
   double max_slab_asymmetry = 0.03;
 };
+
+/// Smallest count direction i of `grid` accepts: the grid's min_count, and at least the units
+/// its head and tail keep.
+inline int lowest_count(const GridRule& grid, std::size_t i) {
+  return std::max(grid.min_count, min_units(grid.directions[i]));
+}
 
 /// Finds grids from the detected symmetry families. Independent translations are combined into
 /// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations

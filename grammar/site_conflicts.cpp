@@ -9,23 +9,15 @@ namespace dg {
 
 namespace {
 
-// Whether item i was unfolded from another item (it holds kHeldBy in its row).
-bool unfolded_item(const ConflictMatrix& conflict, std::size_t i) {
-  return std::find(conflict[i].begin(), conflict[i].end(), kHeldBy) != conflict[i].end();
-}
-
-// Trial `trial`'s order of the item indices: shuffled, the top-level items (not unfolded) first,
-// starting at top-level item trial mod their count.
-std::vector<std::size_t> trial_order(const ConflictMatrix& conflict, int trial, Random& random) {
-  std::vector<std::size_t> order(conflict.size());
+// Trial `trial`'s order of the item indices: shuffled, the top-level items first, starting at
+// top-level item trial mod `top_level`.
+std::vector<std::size_t> trial_order(std::size_t count, std::size_t top_level, int trial, Random& random) {
+  std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
   for (std::size_t i = order.size(); i > 1; --i)
     std::swap(order[i - 1], order[static_cast<std::size_t>(random.uniform() * static_cast<double>(i))]);
-  const auto unfolded_from = std::stable_partition(order.begin(), order.end(),
-                                                   [&](std::size_t i) { return !unfolded_item(conflict, i); });
-  std::vector<std::size_t> top(order.begin(), unfolded_from);
-  std::sort(top.begin(), top.end());
-  const std::size_t start = top[static_cast<std::size_t>(trial) % top.size()];
+  const auto unfolded_from = std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return i < top_level; });
+  const std::size_t start = static_cast<std::size_t>(trial) % top_level;
   std::rotate(order.begin(), std::find(order.begin(), unfolded_from, start), unfolded_from);
   return order;
 }
@@ -40,15 +32,15 @@ bool clashes_with_sibling(const std::vector<std::size_t>& children, std::size_t 
 
 }  // namespace
 
-std::vector<std::vector<std::size_t>> random_independent_sets(const std::vector<std::size_t>& items,
-                                                              const ConflictMatrix& conflict, int trials,
-                                                              Random& random) {
+std::vector<std::vector<std::size_t>> random_independent_sets(const UnfoldedChildren& candidates, int trials, Random& random) {
+  const std::vector<std::size_t>& items = candidates.items;
+  const ConflictMatrix& conflict = candidates.conflict;
   if (items.empty()) return {{}};
   std::vector<std::vector<std::size_t>> sets;
   std::set<std::vector<std::size_t>> seen;
   for (int trial = 0; trial < trials; ++trial) {
     std::vector<std::size_t> chosen;
-    for (std::size_t i : trial_order(conflict, trial, random)) {
+    for (std::size_t i : trial_order(items.size(), candidates.top_level, trial, random)) {
       bool free = true;
       for (std::size_t j : chosen) free = free && !conflict[i][j];
       if (free) chosen.push_back(i);
@@ -65,7 +57,7 @@ UnfoldedChildren unfold_one_level(const std::vector<std::size_t>& children,
                                   const std::function<std::vector<std::size_t>(std::size_t)>& children_of,
                                   const std::function<bool(std::size_t, std::size_t)>& clash) {
   constexpr std::size_t kNoParent = std::numeric_limits<std::size_t>::max();
-  UnfoldedChildren unfolded{children, {}};
+  UnfoldedChildren unfolded{children, {}, children.size()};
   std::vector<std::size_t> parent(children.size(), kNoParent);  // per item: its parent's item index
   for (std::size_t c = 0; c < children.size(); ++c) {
     if (!clashes_with_sibling(children, c, clash)) continue;  // its own productions place its children
@@ -75,13 +67,11 @@ UnfoldedChildren unfold_one_level(const std::vector<std::size_t>& children,
     }
   }
   const std::size_t n = unfolded.items.size();
-  unfolded.conflict.assign(n, std::vector<char>(n, kNoConflict));
+  unfolded.conflict.assign(n, std::vector<char>(n, 0));
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const bool clashing = parent[j] == i || parent[i] == j || clash(unfolded.items[i], unfolded.items[j]);
-      unfolded.conflict[i][j] = unfolded.conflict[j][i] = clashing ? kClash : kNoConflict;
-      if (parent[j] == i) unfolded.conflict[j][i] = kHeldBy;
-    }
+    for (std::size_t j = i + 1; j < n; ++j)
+      unfolded.conflict[i][j] = unfolded.conflict[j][i] =
+          parent[j] == i || parent[i] == j || clash(unfolded.items[i], unfolded.items[j]);
   return unfolded;
 }
 

@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-
 namespace dg {
 namespace {
 
@@ -45,7 +43,7 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
     throw InputError(fmt::format("grid {} has {} direction(s) but {} count(s) were given", grid.name,
                                  grid.directions.size(), counts.size()));
   for (std::size_t i = 0; i < counts.size(); ++i) {
-    const int lowest = std::max(grid.min_count, min_units(grid.directions[i]));
+    const int lowest = lowest_count(grid, i);
     if (counts[i] < lowest || counts[i] > grid.max_count)
       throw InputError(fmt::format("grid {}: count {} of direction {} is outside the allowed range {}..{}{}", grid.name,
                                    counts[i], i + 1, lowest, grid.max_count,

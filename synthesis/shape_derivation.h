@@ -48,7 +48,8 @@ struct ShapeDerivation {
 bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options);
 
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:
-/// seams are welded within 1e-6 eps. Deterministic for a given seed.
+/// seams are welded within kSeamFitFraction eps (grammar/seam_curve.h). Deterministic for a
+/// given seed.
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options);
 
 }  // namespace dg

@@ -38,8 +38,9 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   Random random(plan.seed);
   for (const GridWithPieces& grid : grammar.grids) {
     std::vector<int> counts;
-    for (const GridDirection& d : grid.rule.directions) {
-      const int lo = std::max({1, grid.rule.min_count, min_units(d), static_cast<int>(std::ceil(d.count / options.range_factor))});
+    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
+      const GridDirection& d = grid.rule.directions[i];
+      const int lo = std::max({1, lowest_count(grid.rule, i), static_cast<int>(std::ceil(d.count / options.range_factor))});
       const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
       counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
     }
@@ -56,11 +57,10 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     // one (when the grammar has a choice at all), so the result still depends only on the plan.
     constexpr std::uint64_t kRedraws = 8;
     ShapeDerivationOptions derivation = options.derivation;
-    const bool can_change = derivation_has_choice(grammar.context_free, derivation);
     for (std::uint64_t draw = 0; draw <= kRedraws; ++draw) {
       derivation.seed = draw == 0 ? plan.seed : variant_seed(plan.seed, draw);
       variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
-      if (variant.derivation.changed || !can_change) break;
+      if (variant.derivation.changed || (draw == 0 && !derivation_has_choice(grammar.context_free, derivation))) break;
     }
     variant.mesh = std::move(variant.derivation.mesh);
     return variant;

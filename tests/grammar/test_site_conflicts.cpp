@@ -21,19 +21,18 @@ bool contains(const Sets& sets, const std::vector<std::size_t>& set) {
 
 TEST_CASE("random independent sets are maximal, conflict-free, distinct and seeded", "[grammar][context_free]") {
   // A path 0 - 1 - 2 - 3: its maximal independent sets are {0, 2}, {0, 3} and {1, 3}.
-  const std::vector<std::size_t> items{10, 11, 12, 13};
-  dg::ConflictMatrix conflict(4, std::vector<char>(4, 0));
-  for (std::size_t i = 0; i + 1 < 4; ++i) conflict[i][i + 1] = conflict[i + 1][i] = 1;
+  dg::UnfoldedChildren path{{10, 11, 12, 13}, dg::ConflictMatrix(4, std::vector<char>(4, 0)), 4};
+  for (std::size_t i = 0; i + 1 < 4; ++i) path.conflict[i][i + 1] = path.conflict[i + 1][i] = 1;
   dg::Random random(7);
-  const Sets sets = dg::random_independent_sets(items, conflict, 10, random);
+  const Sets sets = dg::random_independent_sets(path, 10, random);
   CHECK(sets.size() == 3);
   CHECK(contains(sets, {10, 12}));
   CHECK(contains(sets, {10, 13}));
   CHECK(contains(sets, {11, 13}));
   dg::Random again(7);
-  CHECK(dg::random_independent_sets(items, conflict, 10, again) == sets);
+  CHECK(dg::random_independent_sets(path, 10, again) == sets);
   dg::Random empty_random(1);
-  CHECK(dg::random_independent_sets({}, {}, 10, empty_random) == Sets{{}});
+  CHECK(dg::random_independent_sets({}, 10, empty_random) == Sets{{}});
 }
 
 TEST_CASE("one unfolded level lets a grandchild take the place of its conflicting parent", "[grammar][context_free]") {
@@ -47,7 +46,7 @@ TEST_CASE("one unfolded level lets a grandchild take the place of its conflictin
   CHECK(unfolded.conflict[0][2] == 1);  // a child and its own child
   CHECK(unfolded.conflict[1][2] == 0);
   dg::Random random(3);
-  const Sets sets = dg::random_independent_sets(unfolded.items, unfolded.conflict, 10, random);
+  const Sets sets = dg::random_independent_sets(unfolded, 10, random);
   // Leaving child 1 out for child 2 keeps site 3 (without unfolding: {1} and {2} only).
   CHECK(sets.size() == 2);
   CHECK(contains(sets, {1}));
@@ -64,7 +63,7 @@ TEST_CASE("a child that clashes with no sibling is not unfolded", "[grammar][con
   const dg::UnfoldedChildren unfolded = dg::unfold_one_level({1, 2, 5}, children_of, clash);
   CHECK(unfolded.items == std::vector<std::size_t>{1, 2, 5, 3});
   dg::Random random(3);
-  const Sets sets = dg::random_independent_sets(unfolded.items, unfolded.conflict, 10, random);
+  const Sets sets = dg::random_independent_sets(unfolded, 10, random);
   CHECK(sets.size() == 2);
   CHECK(contains(sets, {1, 5}));
   CHECK(contains(sets, {2, 3, 5}));
@@ -80,10 +79,11 @@ TEST_CASE("a grandchild is not chosen in place of a parent that nothing chosen c
   auto clash = [&](std::size_t a, std::size_t b) { return clashing.count({std::min(a, b), std::max(a, b)}) > 0; };
   const dg::UnfoldedChildren unfolded = dg::unfold_one_level({1, 2}, children_of, clash);
   REQUIRE(unfolded.items == std::vector<std::size_t>{1, 2, 3});
-  CHECK(unfolded.conflict[2][0] == dg::kHeldBy);
+  CHECK(unfolded.top_level == 2);      // site 3 is held by a child: listed after the children
+  CHECK(unfolded.conflict[2][0] == 1);  // and conflicts with its holder
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     dg::Random random(seed);
-    const Sets sets = dg::random_independent_sets(unfolded.items, unfolded.conflict, 10, random);
+    const Sets sets = dg::random_independent_sets(unfolded, 10, random);
     CHECK(sets == Sets{{1}, {2}});
   }
 }

@@ -28,9 +28,6 @@ std::string holes_text(const ContextFreeStats& stats) {
                      stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
 }
 
-// Smallest count direction i of `grid` accepts.
-int lowest_count(const GridRule& grid, std::size_t i) { return std::max(grid.min_count, min_units(grid.directions[i])); }
-
 // A note on the units a direction keeps once in its head and tail, e.g. " (1 unit kept once in
 // the head: it differs a little from the repeated unit)"; empty when it keeps none.
 std::string kept_units_text(const GridDirection& d) {
