@@ -3,6 +3,7 @@
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
 #include "synthesis/shape_derivation.h"
+#include "tools/dockgrammar/docking_site_picture.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
@@ -114,10 +115,14 @@ std::string context_free_markdown(const AnalysisReport& report) {
   const nlohmann::json ops = operation_counts(report.docking);
   std::string md = fmt::format(
       "## Docking sites and context-free rules\n\n{} elementary docking sites over the top symmetries: {} insert, {} delete, "
-      "{} replace ({} marked as colliding, {} slippable).\n\n",
+      "{} replace ({} marked as colliding, {} slippable).{}\n\n",
       report.docking.sites.size(), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.collides; }),
-      std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }));
+      std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }),
+      report.docking.sites.empty() ? ""
+                                   : fmt::format(" Picture: `{}.sites.png` (dockers filled, their docking sites dark around "
+                                                 "them: insert green, delete red, replace blue, slippable grey).",
+                                                 report.grammar_path.stem().stem().string()));
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
@@ -127,6 +132,9 @@ std::string context_free_markdown(const AnalysisReport& report) {
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
                       std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }));
+  md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
+                    "non-terminal it fills, the axiom's terminal light grey).\n",
+                    report.grammar_path.stem().stem().string());
   md += "\nProductions (terminal triangles, then the non-terminals they contain):\n\n";
   auto line = [&](const std::string& lhs, const ShapeProduction& p) {
     std::string children;
@@ -301,6 +309,8 @@ void write_analysis_pictures(const std::filesystem::path& folder, const std::str
                        picture_options(mesh, report.grammar.up_axis));
   }
   write_rules_picture(folder, stem, report);
+  write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,
+                             report.docking, report.grammar.up_axis);
 }
 
 }  // namespace dg::cli

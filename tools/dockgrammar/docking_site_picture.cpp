@@ -1,0 +1,70 @@
+#include "tools/dockgrammar/docking_site_picture.h"
+
+#include "tools/dockgrammar/pictures.h"
+
+#include "geometry/cell_pieces.h"
+#include "geometry/model_io.h"
+#include "geometry/render_mesh.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace dg::cli {
+namespace {
+
+// (fill, curve) colours of an operation's docker and docking site.
+std::pair<Rgb, Rgb> operation_colors(const DockingSite& site) {
+  if (site.slippable) return {Rgb{200, 200, 200}, Rgb{110, 110, 110}};
+  switch (site.operation) {
+    case OperationKind::insert: return {Rgb{150, 215, 150}, Rgb{20, 120, 30}};
+    case OperationKind::remove: return {Rgb{235, 160, 160}, Rgb{170, 20, 20}};
+    case OperationKind::replace: break;
+  }
+  return {Rgb{160, 190, 235}, Rgb{20, 60, 170}};
+}
+
+}  // namespace
+
+void write_docking_site_picture(const std::filesystem::path& png, const std::filesystem::path& ply,
+                                const PreparedModel& prepared, const DockingSiteResult& docking,
+                                const std::string& up_axis) {
+  if (docking.sites.empty()) return;
+  const VoxelSurface& surface = prepared.surface;
+  std::vector<std::uint32_t> piece_cells;
+  const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
+
+  std::vector<std::size_t> order(docking.sites.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return docking.sites[a].docker.size() > docking.sites[b].docker.size();
+  });
+  std::vector<Rgb> cell_color(surface.cell_count(), Rgb{225, 225, 225});
+  std::vector<char> in_docker(surface.cell_count(), 0);
+  for (std::size_t index : order) {
+    const DockingSite& site = docking.sites[index];
+    const auto [fill, curve] = operation_colors(site);
+    for (std::uint32_t c : site.docker) {
+      cell_color[c] = fill;
+      in_docker[c] = 1;
+    }
+    for (std::uint32_t c : site.site) {
+      const auto near = surface.neighbours(c);
+      if (std::any_of(near.begin(), near.end(), [&](std::uint32_t n) { return in_docker[n] != 0; })) cell_color[c] = curve;
+    }
+    for (std::uint32_t c : site.docker) in_docker[c] = 0;
+  }
+
+  std::vector<Rgb> vertex_colors(pieces.positions.size());
+  std::vector<Rgba8> triangle_colors(pieces.triangles.size());
+  for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
+    const Rgb color = cell_color[piece_cells[t]];
+    triangle_colors[t] = {color[0], color[1], color[2], 255};
+    for (std::uint32_t v : pieces.triangles[t]) vertex_colors[v] = color;
+  }
+  write_mesh(ply, pieces, &vertex_colors);
+  MeshRenderOptions options = picture_options(prepared.model.mesh, up_axis);
+  options.draw_edges = false;  // the cell pieces would outline every voxel
+  write_mesh_picture(png, pieces, triangle_colors, {}, options);
+}
+
+}  // namespace dg::cli
