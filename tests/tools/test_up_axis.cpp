@@ -1,6 +1,7 @@
 // `--up x|y|z` on the commands that draw pictures: the camera's up axis follows the option,
 // analyze stores it in the grammar file, and generate and resize default to the stored axis.
 
+#include "geometry/model_io.h"
 #include "geometry/png_reader.h"
 #include "support/cli_run.h"
 
@@ -90,5 +91,22 @@ TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resi
                         folder);
   CHECK(broken.status == 2);
   CHECK(broken.output.find("\"up\"") != std::string::npos);
+  fs::remove_all(folder);
+}
+
+// glTF defines +Y as up, so a .glb input is stored (and drawn) y-up even when its shape alone
+// suggests z (the fence is thinnest along y); the same mesh as OBJ keeps the shape's guess.
+TEST_CASE("up axis: glTF input is y-up by its specification; OBJ input is guessed", "[tools][pictures]") {
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-gltf-test");
+  const dg::Model fence = dg::read_model(std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj");
+  auto stored_up = [&](const std::string& file) {
+    const fs::path output = folder / fs::path(file).extension().string().substr(1);
+    dg::write_mesh(folder / file, fence.mesh);
+    REQUIRE(dg::test::run_cli("analyze " + (folder / file).string() + " -q -o " + output.string(), folder).status == 0);
+    std::ifstream in(output / "fence.grammar.json");
+    return nlohmann::json::parse(in).value("up", "");
+  };
+  CHECK(stored_up("fence.glb") == "y");
+  CHECK(stored_up("fence.obj").empty());
   fs::remove_all(folder);
 }

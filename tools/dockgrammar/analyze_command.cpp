@@ -34,7 +34,7 @@ void add_analyze_command(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
       ->capture_default_str();
-  add_up_option(*command, options->up, "z when the model is thinnest along y, else y; stored in the grammar file for generate");
+  add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y; stored in the grammar file for generate");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
@@ -50,7 +50,7 @@ void add_analyze_command(CLI::App& app) {
     grammar.source_hash = file_hash(options->model.model_path);
     grammar.r = prepared.surface.r();
     grammar.eps = prepared.surface.eps();
-    grammar.up_axis = options->up;
+    grammar.up_axis = model_up_axis(options->model.model_path, options->up);
     grammar.exemplar = prepared.model.mesh;
     for (GridRule& rule : find_grids(prepared, symmetries)) {
       std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);

@@ -2,13 +2,23 @@
 
 #include "geometry/errors.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
+#include <filesystem>
 
 namespace dg::cli {
 
 void add_up_option(CLI::App& command, std::string& axis, const std::string& fallback) {
   command.add_option("--up", axis, "Up axis of the model in pictures: x, y or z (default: " + fallback + ")")
       ->check(CLI::IsMember({"x", "y", "z"}));
+}
+
+std::string model_up_axis(const std::string& model_path, const std::string& given) {
+  if (!given.empty()) return given;
+  std::string extension = std::filesystem::path(model_path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension == ".gltf" || extension == ".glb" ? "y" : "";
 }
 
 MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis) {

@@ -17,6 +17,10 @@ namespace dg::cli {
 /// `fallback` says in the help text what an absent option means.
 void add_up_option(CLI::App& command, std::string& axis, const std::string& fallback);
 
+/// The up axis to use for a model file: `given` (from --up) when set; else "y" for glTF files
+/// (.gltf/.glb: glTF 2.0 defines +Y as up); else empty (guess from the shape, see picture_options).
+std::string model_up_axis(const std::string& model_path, const std::string& given);
+
 /// Render options with the model's up axis: `axis` "x", "y" or "z" as given to --up, or empty
 /// to guess from the model: z when it is thinnest along y (facades, fences lying in the x-z
 /// plane), y otherwise (the common OBJ/glTF convention).

@@ -23,13 +23,14 @@ void add_symmetry_command(CLI::App& app) {
   add_model_options(*command, options->model);
   command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(CLI::PositiveNumber);
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
-  add_up_option(*command, options->up, "z when the model is thinnest along y, else y");
+  add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
     const SymmetryResult result = detect_symmetries(prepared, {}, progress);
-    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top, options->up);
+    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top,
+                                                               model_up_axis(options->model.model_path, options->up));
     if (options->model.json) {
       nlohmann::json out = symmetry_json(result, options->top);
       out["model"] = prepared.model.source_path;
