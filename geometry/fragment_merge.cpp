@@ -62,6 +62,15 @@ void mark_nesting(Cdt& cdt) {
   }
 }
 
+// True when vertex v lies strictly between vertices a and b on the segment joining them
+// (within 1e-9 of its length).
+bool on_segment(const std::vector<Vec3>& positions, std::uint32_t v, std::uint32_t a, std::uint32_t b) {
+  const Vec3 &p = positions[v], &pa = positions[a], &pb = positions[b];
+  const double length = (pb - pa).norm();
+  return length > 0.0 && (pb - pa).cross(p - pa).norm() <= 1e-9 * length * length && (p - pa).dot(pb - pa) > 0.0 &&
+         (p - pb).dot(pa - pb) > 0.0;
+}
+
 double area_of(const std::vector<Vec3>& positions, const Triangle& t) {
   return 0.5 * (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
 }
@@ -132,7 +141,7 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
 
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
-                                bool straighten_open_borders) {
+                                bool straighten_open_borders, bool straighten_label_borders) {
   const auto triangle_count = static_cast<std::uint32_t>(mesh.triangles.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t+k
   uses.reserve(3 * static_cast<std::size_t>(triangle_count));
@@ -147,6 +156,10 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   std::vector<std::array<std::uint32_t, 2>> open_ends(straighten_open_borders ? mesh.positions.size() : 0);
   std::vector<std::uint8_t> open_count(open_ends.size(), 0);
   std::vector<char> between_origins(open_ends.size(), 0);  // on an edge between two input triangles
+  // Where region borders (edges between labels or origins) meet: the other ends of a vertex's
+  // first two border edges, and how many end there (a third one keeps the vertex).
+  std::vector<std::array<std::uint32_t, 2>> border_ends(straighten_label_borders ? mesh.positions.size() : 0);
+  std::vector<std::uint8_t> border_count(border_ends.size(), 0);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].first == uses[i].first) ++j;
@@ -156,6 +169,11 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
         if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
         else kept[v] = 1;
+    } else if (straighten_label_borders && j - i == 2 && (label[a] != label[b] || origin[a] != origin[b])) {
+      for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}}) {
+        if (border_count[v] < 2) border_ends[v][border_count[v]] = w;
+        if (border_count[v] < 3) ++border_count[v];
+      }
     } else if (j - i != 2 || label[a] != label[b]) {
       kept[lo] = kept[hi] = 1;
     } else if (straighten_open_borders && origin[a] != origin[b]) {
@@ -169,12 +187,12 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   }
   for (std::size_t v = 0; v < open_ends.size(); ++v) {
     if (kept[v] || open_count[v] == 0) continue;
-    const Vec3 &p = mesh.positions[v], &a = mesh.positions[open_ends[v][0]], &b = mesh.positions[open_ends[v][1]];
-    const double length = (b - a).norm();
-    // Kept unless it lies on the segment between its two open neighbours (1e-9 of its length).
-    kept[v] = open_count[v] != 2 || between_origins[v] || !(length > 0.0) || (b - a).cross(p - a).norm() > 1e-9 * length * length ||
-              (p - a).dot(b - a) <= 0.0 || (p - b).dot(a - b) <= 0.0;
+    // Kept unless it lies on the segment between its two open neighbours.
+    kept[v] = open_count[v] != 2 || between_origins[v] || !on_segment(mesh.positions, v, open_ends[v][0], open_ends[v][1]);
   }
+  for (std::size_t v = 0; v < border_ends.size(); ++v)
+    if (border_count[v] != 0 && !kept[v])
+      kept[v] = border_count[v] != 2 || !on_segment(mesh.positions, v, border_ends[v][0], border_ends[v][1]);
   std::vector<std::vector<std::uint32_t>> regions;
   std::vector<std::uint32_t> region_of(triangle_count, std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t t = 0; t < triangle_count; ++t) {

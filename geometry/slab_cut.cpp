@@ -4,14 +4,18 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <unordered_map>
 
 namespace dg {
 namespace {
 
-// Splits every triangle along one plane n . x = offset.
-TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, double offset, double tolerance) {
+// Splits every triangle along one plane n . x = offset; `origin` (one entry per triangle of
+// `mesh`) is replaced by one entry per triangle of the result, each piece keeping its triangle's.
+TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, double offset, double tolerance,
+                             std::vector<std::uint32_t>& origin) {
   TriangleMesh out;
+  std::vector<std::uint32_t> out_origin;
   out.positions = mesh.positions;
   std::vector<double> side(out.positions.size());
   for (std::size_t v = 0; v < out.positions.size(); ++v) {
@@ -36,7 +40,8 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
     crossings.emplace(key, index);
     return index;
   };
-  for (const Triangle& tri : mesh.triangles) {
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
     // Rotate so that the corner alone on its side (if any) comes first.
     int alone = -1;
     for (int k = 0; k < 3; ++k) {
@@ -49,6 +54,7 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
     }
     if (alone < 0) {
       out.triangles.push_back(tri);
+      out_origin.push_back(origin[t]);
       continue;
     }
     const std::uint32_t a = tri[alone], b = tri[(alone + 1) % 3], c = tri[(alone + 2) % 3];
@@ -74,16 +80,24 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
         out.triangles.push_back({b, c, ca});
       }
     }
+    out_origin.resize(out.triangles.size(), origin[t]);
   }
+  origin = std::move(out_origin);
   return out;
 }
 
 }  // namespace
 
 TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, const std::vector<double>& cuts,
-                              double tolerance) {
+                              double tolerance, std::vector<std::uint32_t>* origin) {
+  std::vector<std::uint32_t> own;
+  if (!origin) {
+    own.resize(mesh.triangles.size());
+    std::iota(own.begin(), own.end(), 0u);
+    origin = &own;
+  }
   TriangleMesh result = mesh;
-  for (double offset : cuts) result = cut_along_plane(result, direction, offset, tolerance);
+  for (double offset : cuts) result = cut_along_plane(result, direction, offset, tolerance, *origin);
   return result;
 }
 

@@ -4,6 +4,7 @@
 
 #include "geometry/mesh.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace dg {
@@ -11,8 +12,11 @@ namespace dg {
 /// Splits the triangles of `mesh` along the planes direction . x = cuts[i] (direction unit,
 /// model units). An edge crossing a plane gets one new vertex shared by both of its triangles,
 /// so a closed mesh stays closed; vertices within `tolerance` of a plane are moved onto it.
+/// The result keeps the input's vertices first, in their order. With `origin` (one entry per
+/// input triangle, e.g. 0 .. n-1), it is replaced by one entry per output triangle: the entry of
+/// the input triangle it was cut from.
 TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, const std::vector<double>& cuts,
-                              double tolerance);
+                              double tolerance, std::vector<std::uint32_t>* origin = nullptr);
 
 /// Index of the slab holding triangle t of `mesh`, judged by its centroid: 0 below cuts[0],
 /// i between cuts[i-1] and cuts[i], cuts.size() above the last (cuts ascending).

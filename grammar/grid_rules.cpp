@@ -1,6 +1,7 @@
 #include "grammar/grid_rules.h"
 
 #include "grammar/asymmetric_spans.h"
+#include "geometry/fragment_merge.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
 #include "symmetry/symmetric_region.h"
@@ -9,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 
 namespace dg {
@@ -278,6 +280,33 @@ bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
   return (basis * coefficients - unit).norm() > kIndependentDirection;
 }
 
+// Groups of exemplar triangles that lie in one plane (within `tolerance`, model units) and
+// are joined by edges that exactly two triangles use, as one id per triangle: cutting may then
+// re-triangulate a flat face as a whole instead of triangle by triangle.
+std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, double tolerance) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> users;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) users[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
+  std::vector<std::uint32_t> group(mesh.triangles.size());
+  std::iota(group.begin(), group.end(), 0u);
+  auto root = [&](std::uint32_t x) {
+    while (group[x] != x) x = group[x] = group[group[x]];
+    return x;
+  };
+  auto flat = [&](std::uint32_t a, std::uint32_t b) {  // b's corners on a's plane, same side up
+    const Vec3 n = mesh.area_vector(a).normalized(), m = mesh.area_vector(b).normalized();
+    if (!(n.dot(m) > 0.0)) return false;
+    const Vec3& p = mesh.positions[mesh.triangles[a][0]];
+    return std::all_of(mesh.triangles[b].begin(), mesh.triangles[b].end(),
+                       [&](std::uint32_t v) { return std::abs(n.dot(mesh.positions[v] - p)) <= tolerance; });
+  };
+  for (const auto& [edge, triangles] : users)
+    if (triangles.size() == 2 && flat(triangles[0], triangles[1]) && flat(triangles[1], triangles[0]))
+      group[root(triangles[0])] = root(triangles[1]);
+  for (std::uint32_t t = 0; t < group.size(); ++t) group[t] = root(t);
+  return group;
+}
+
 }  // namespace
 
 int slab_class(std::size_t slab, const GridDirection& direction) {
@@ -347,18 +376,32 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
 }
 
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
-  GridCut result{mesh, {}};
+  TriangleMesh cut = mesh;
+  std::vector<std::uint32_t> origin = coplanar_groups(mesh, 1e-6 * eps);
   std::vector<std::vector<double>> planes;
   for (const GridDirection& direction : grid.directions) {
     std::vector<double> offsets;
     for (int j = 0; j <= direction.count; ++j) offsets.push_back(direction.cut + j * direction.pitch);
-    result.mesh = cut_along_planes(result.mesh, direction.direction, offsets, 1e-6 * eps);
+    cut = cut_along_planes(cut, direction.direction, offsets, 1e-6 * eps, &origin);
     planes.push_back(std::move(offsets));
   }
-  result.slabs.resize(result.mesh.triangles.size());
-  for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t)
+  std::vector<std::vector<std::size_t>> slabs(cut.triangles.size());
+  std::map<std::vector<std::size_t>, std::uint32_t> cells;  // slab tuple -> label
+  std::vector<std::uint32_t> label(cut.triangles.size());
+  for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
     for (std::size_t i = 0; i < grid.directions.size(); ++i)
-      result.slabs[t].push_back(slab_of(result.mesh, t, grid.directions[i].direction, planes[i]));
+      slabs[t].push_back(slab_of(cut, t, grid.directions[i].direction, planes[i]));
+    label[t] = cells.try_emplace(slabs[t], static_cast<std::uint32_t>(cells.size())).first->second;
+  }
+  // The planes cut whole triangles, and one plane after another: join the fragments of each
+  // flat face of the exemplar within a cell again, keeping the exemplar's vertices and only
+  // those cut vertices where the cell borders turn or meet an edge between faces.
+  std::vector<char> pinned(cut.positions.size(), 0);
+  std::fill(pinned.begin(), pinned.begin() + static_cast<std::ptrdiff_t>(mesh.positions.size()), 1);
+  MergedFragments merged = merge_fragments(cut, origin, label, pinned, false, true);
+  GridCut result{std::move(merged.mesh), {}};
+  result.slabs.reserve(result.mesh.triangles.size());
+  for (std::uint32_t t : merged.representative) result.slabs.push_back(slabs[t]);
   return result;
 }
 

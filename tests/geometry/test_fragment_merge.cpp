@@ -67,3 +67,22 @@ TEST_CASE("fragment merge: one label and straightened open borders give back the
   CHECK(kept.mesh.triangles.size() > 2);
   CHECK(kept.mesh.area() == Approx(1.0).epsilon(1e-12));
 }
+
+TEST_CASE("fragment merge: straightened label borders keep only the vertices where borders turn or meet", "[geometry][fragment_merge]") {
+  const dg::ZoneCut cut = diced_square();
+  std::vector<std::uint32_t> label(cut.mesh.triangles.size());
+  for (std::size_t t = 0; t < label.size(); ++t) label[t] = centroid(cut.mesh, t).x() < 0.5 ? 0 : 1;
+  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), false, true);
+  // Inside the open outline (40 vertices, every 0.1) only (0.5, 0.5) stays, where the label
+  // border x = 0.5 crosses the square's diagonal: 2 * 1 + 40 - 2 = 40 triangles.
+  CHECK(merged.mesh.triangles.size() == 40);
+  CHECK(merged.mesh.area() == Approx(1.0).epsilon(1e-12));
+  for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+    const Vec3 c = centroid(merged.mesh, t);
+    CHECK((c.x() < 0.5) == (label[merged.representative[t]] == 0));
+    CHECK(merged.mesh.area_vector(t).z() > 0.0);
+  }
+  const dg::EdgeStatistics edges = dg::edge_statistics(merged.mesh);
+  CHECK(edges.non_manifold_edges == 0);
+  CHECK(edges.boundary_edges == 40);
+}

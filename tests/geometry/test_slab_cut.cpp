@@ -39,3 +39,24 @@ TEST_CASE("cutting a back-to-back double face splits both faces alike", "[geomet
     CHECK(cut.area() == Approx(mesh.area()).epsilon(1e-12));
   }
 }
+
+TEST_CASE("cutting reports the input triangle of every piece", "[geometry][slab_cut]") {
+  // A long rectangle (two triangles) across nine planes.
+  dg::TriangleMesh mesh;
+  mesh.positions = {{0, 0, 0}, {10, 0, 0}, {10, 1, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  std::vector<double> cuts;
+  for (int k = 1; k <= 9; ++k) cuts.push_back(k);
+  std::vector<std::uint32_t> origin{7, 3};
+  const dg::TriangleMesh cut = dg::cut_along_planes(mesh, dg::Vec3::UnitX(), cuts, 1e-9, &origin);
+  REQUIRE(origin.size() == cut.triangles.size());
+  std::array<double, 2> area{0.0, 0.0};
+  for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
+    REQUIRE((origin[t] == 7 || origin[t] == 3));
+    area[origin[t] == 7 ? 0 : 1] += cut.area_vector(t).norm() / 2.0;
+  }
+  CHECK(area[0] == Approx(5.0).epsilon(1e-12));
+  CHECK(area[1] == Approx(5.0).epsilon(1e-12));
+  // The input's vertices come first, unchanged.
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) CHECK(cut.positions[v] == mesh.positions[v]);
+}
