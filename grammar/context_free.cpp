@@ -273,6 +273,7 @@ class Builder {
     const double flatness = 2.0 * surface_.eps();
     class_seam_.assign(class_nodes_.size(), SeamSurface{});
     class_docker_side_.assign(class_nodes_.size(), {});
+    class_face_index_.clear();
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       const Node& root = nodes_[class_nodes_[k].front()];
       std::optional<Plane> plane = fit_seam(surface_, root, flatness);
@@ -298,6 +299,7 @@ class Builder {
         if (seam.faces.empty())
           for (std::size_t i : class_nodes_[k]) nodes_[i].kept = false;
       }
+      class_face_index_.emplace_back(seam);
     }
   }
 
@@ -333,12 +335,12 @@ class Builder {
   PieceFilter seam_face_filter(const Node& node) const {
     const SeamSurface& seam = class_seam_[node.klass];
     if (seam.kind != SeamSurface::Kind::voxel_faces) return {};
-    return [&seam, frame = node.frame, back = node.frame_inverse](const std::array<Vec3, 3>& corners, std::size_t axis,
-                                                                  double offset) {
+    return [&faces = class_face_index_[node.klass], frame = node.frame, back = node.frame_inverse](
+               const std::array<Vec3, 3>& corners, std::size_t axis, double offset) {
       const std::array<Vec3, 3> own{back.apply(corners[0]), back.apply(corners[1]), back.apply(corners[2])};
       const double base = frame.rotation.col(static_cast<Eigen::Index>(axis)).dot(frame.translation);
-      const auto plane = static_cast<std::int32_t>(std::lround((offset - base) / seam.eps));
-      return crosses_face(seam, own, static_cast<int>(axis), plane);
+      const auto plane = static_cast<std::int32_t>(std::lround((offset - base) / faces.eps()));
+      return crosses_face(faces, own, static_cast<int>(axis), plane);
     };
   }
 
@@ -635,6 +637,7 @@ class Builder {
   std::vector<std::vector<std::size_t>> class_nodes_;
   std::vector<SeamSurface> class_seam_;               // per class, in its frame
   std::vector<std::vector<char>> class_docker_side_;  // per class with a voxel seam: cells on its docker side
+  std::vector<SeamFaceIndex> class_face_index_;       // per class: its seam's voxel faces by plane
   TriangleMesh cut_;                                  // the exemplar cut along every kept seam
   std::vector<std::uint32_t> origin_;                 // per triangle of cut_: its exemplar triangle
   std::vector<char> taken_;                           // scratch flags per triangle of cut_

@@ -62,28 +62,66 @@ std::vector<PlaneFamily> seam_planes(const SeamSurface& seam, const RigidTransfo
   return families;
 }
 
-bool crosses_face(const SeamSurface& seam, const std::array<Vec3, 3>& corners, int axis, std::int32_t plane) {
+SeamFaceIndex::SeamFaceIndex(const SeamSurface& seam) : eps_(seam.eps) {
+  keys_.reserve(seam.faces.size());
+  for (const VoxelFace& f : seam.faces)
+    keys_.push_back({f.axis, f.voxel[f.axis], f.voxel[(f.axis + 1) % 3], f.voxel[(f.axis + 2) % 3]});
+  std::sort(keys_.begin(), keys_.end());
+}
+
+namespace {
+
+using Point2 = std::array<double, 2>;
+
+// Whether segment from-to meets the square [j, j+1] x [l, l+1] grown by `margin` on every side
+// (grid units; Liang-Barsky clipping).
+bool segment_meets_square(const Point2& from, const Point2& to, std::int64_t j, std::int64_t l, double margin) {
+  const Point2 lo{static_cast<double>(j) - margin, static_cast<double>(l) - margin};
+  double t0 = 0.0, t1 = 1.0;
+  for (int d = 0; d < 2; ++d) {
+    const double delta = to[d] - from[d], hi = lo[d] + 1.0 + 2.0 * margin;
+    if (delta == 0.0) {
+      if (from[d] < lo[d] || from[d] > hi) return false;
+      continue;
+    }
+    double ta = (lo[d] - from[d]) / delta, tb = (hi - from[d]) / delta;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool crosses_face(const SeamFaceIndex& faces, const std::array<Vec3, 3>& corners, int axis, std::int32_t plane) {
   const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+  const double eps = faces.eps(), level = plane * eps;
+  // The chord: where the triangle meets the plane, in grid units of the other two axes.
+  std::array<Point2, 3> ends;
+  int count = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &p = corners[k], &q = corners[(k + 1) % 3];
+    const double dp = p[axis] - level, dq = q[axis] - level;
+    if (dp == 0.0) ends[count++] = {p[b] / eps, p[c] / eps};
+    if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
+      const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+      ends[count++] = {x[b] / eps, x[c] / eps};
+    }
+  }
   double lo_b = corners[0][b], hi_b = lo_b, lo_c = corners[0][c], hi_c = lo_c;
   for (const Vec3& p : corners) {
     lo_b = std::min(lo_b, p[b]), hi_b = std::max(hi_b, p[b]);
     lo_c = std::min(lo_c, p[c]), hi_c = std::max(hi_c, p[c]);
   }
-  // Faces whose square [j, j+1] x [l, l+1] (times eps) meets the box, with a little slack.
+  // Faces whose square [j, j+1] x [l, l+1] (times eps) meets the triangle's box, with a little
+  // slack; of those, the ones the chord meets (all of them when rounding left no chord).
   const double slack = 1e-6;
-  const auto j0 = static_cast<std::int64_t>(std::floor(lo_b / seam.eps - slack)) - 1, j1 = static_cast<std::int64_t>(std::floor(hi_b / seam.eps + slack));
-  const auto l0 = static_cast<std::int64_t>(std::floor(lo_c / seam.eps - slack)) - 1, l1 = static_cast<std::int64_t>(std::floor(hi_c / seam.eps + slack));
-  if ((j1 - j0 + 1) * (l1 - l0 + 1) > 1024) return true;
-  VoxelFace face;
-  face.axis = axis;
-  face.voxel[axis] = plane;
-  for (std::int64_t j = j0; j <= j1; ++j)
-    for (std::int64_t l = l0; l <= l1; ++l) {
-      face.voxel[b] = static_cast<std::int32_t>(j);
-      face.voxel[c] = static_cast<std::int32_t>(l);
-      if (std::binary_search(seam.faces.begin(), seam.faces.end(), face)) return true;
-    }
-  return false;
+  const auto j0 = static_cast<std::int64_t>(std::floor(lo_b / eps - slack)) - 1, j1 = static_cast<std::int64_t>(std::floor(hi_b / eps + slack));
+  const auto l0 = static_cast<std::int64_t>(std::floor(lo_c / eps - slack)) - 1, l1 = static_cast<std::int64_t>(std::floor(hi_c / eps + slack));
+  return faces.any_in(axis, plane, j0, j1, l0, l1, [&](std::int64_t j, std::int64_t l) {
+    return count == 0 || segment_meets_square(ends[0], ends[count - 1], j, l, slack);
+  });
 }
 
 bool on_docker_side(const SeamSurface& seam, const VoxelSurface& surface, const std::vector<char>& docker_side,
