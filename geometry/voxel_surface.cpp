@@ -173,9 +173,10 @@ class VoxelSurfaceBuilder {
     surface_.coords_.resize(keys_.size());
     tbb::parallel_for(std::size_t(0), keys_.size(), [&](std::size_t c) { surface_.coords_[c] = unpack(keys_[c]); });
     openvdb::initialize();
+    // Looked up by voxel coordinate only, so the grid keeps the identity transform: OpenVDB
+    // refuses a voxel-size transform below about 1.4e-5 (eps^3 under its scale tolerance), which
+    // models a few millimetres across in metres need.
     auto grid = openvdb::Int32Grid::create(-1);
-    grid->setTransform(openvdb::math::Transform::createLinearTransform(surface_.eps_));
-    grid->transform().postTranslate(openvdb::Vec3d(0.5 * surface_.eps_));
     grid->setName("cell_index");
     auto accessor = grid->getAccessor();
     for (std::size_t c = 0; c < keys_.size(); ++c) {
