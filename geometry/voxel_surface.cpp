@@ -5,6 +5,7 @@
 #include "geometry/clip_polygon.h"
 #include "geometry/errors.h"
 
+#include <fmt/format.h>
 #include <openvdb/openvdb.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -157,6 +158,10 @@ class VoxelSurfaceBuilder {
     if (!(surface_.r_ > 0.0) || !std::isfinite(surface_.r_))
       throw InputError("model has zero extent: cannot choose a radius (pass -r)");
     surface_.eps_ = options.eps > 0.0 ? options.eps : surface_.r_ / 4.0;
+    if (surface_.eps_ > surface_.r_)
+      throw InputError(fmt::format("voxel size {:.6g} is larger than the radius r = {:.6g}: a voxel must fit inside the "
+                                   "r-neighbourhood (default voxel size r/4)",
+                                   surface_.eps_, surface_.r_));
     const double limit = static_cast<double>(kKeyBias - 2);
     for (int axis = 0; axis < 3; ++axis)
       if (std::abs(bounds.min[axis] / surface_.eps_) > limit || std::abs(bounds.max[axis] / surface_.eps_) > limit)

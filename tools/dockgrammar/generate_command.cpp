@@ -1,6 +1,7 @@
 // `dockgrammar generate GRAMMAR --count N [--seed S] -o DIR [--format obj|ply|glb]`.
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
@@ -61,7 +62,7 @@ void add_generate_command(CLI::App& app) {
                       "Context-free: after this many triangles every slot gets the exemplar's production")
       ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number_check(false));
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command

@@ -1,6 +1,7 @@
 // `dockgrammar symmetry MODEL`: partial rigid symmetries ordered by r-symmetric area.
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
@@ -21,7 +22,7 @@ void add_symmetry_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
   add_model_options(*command, options->model);
-  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(finite_number_check(true));
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
   add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y");
   command->callback([options] {

@@ -1,0 +1,32 @@
+// Out-of-range numbers on the command line: one short usage error with exit status 2.
+
+#include "support/cli_run.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+TEST_CASE("options: negative, infinite and oversized numbers are usage errors with short messages", "[tools]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-option-errors-test");
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
+  auto run = [&](const std::string& arguments) { return dg::test::run_cli(arguments, folder); };
+
+  const dg::test::CliRun negative = run("info " + model + " -q -r -1");
+  CHECK(negative.status == 2);
+  CHECK(negative.output.find("--radius: must be 0 or more, got -1") != std::string::npos);
+  CHECK(negative.output.size() < 200);  // no range printed up to the largest double
+
+  const dg::test::CliRun infinite = run("info " + model + " -q --voxel inf");
+  CHECK(infinite.status == 2);
+  CHECK(infinite.output.find("'inf' is not a finite number") != std::string::npos);
+
+  const dg::test::CliRun zero_top = run("symmetry " + model + " -q --top 0");
+  CHECK(zero_top.status == 2);
+  CHECK(zero_top.output.find("--top: must be greater than 0") != std::string::npos);
+
+  // A voxel larger than the radius leaves no r-neighbourhood to compare.
+  const dg::test::CliRun coarse = run("analyze " + model + " -q -r 0.1 --voxel 0.5 -o " + (folder / "out").string());
+  CHECK(coarse.status == 2);
+  CHECK(coarse.output.find("voxel size 0.5 is larger than the radius r = 0.1") != std::string::npos);
+  std::filesystem::remove_all(folder);
+}
