@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -280,10 +281,57 @@ bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
   return (basis * coefficients - unit).norm() > kIndependentDirection;
 }
 
-// Groups of exemplar triangles that lie in one plane (within `tolerance`, model units) and
-// are joined by edges that exactly two triangles use, as one id per triangle: cutting may then
-// re-triangulate a flat face as a whole instead of triangle by triangle.
-std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, double tolerance) {
+constexpr std::uint32_t kNoTwin = std::numeric_limits<std::uint32_t>::max();
+
+// Per triangle of `mesh`: the earlier triangle it doubles back to back (the same corners in the
+// opposite order), or kNoTwin; a triangle is the twin of at most one other.
+std::vector<std::uint32_t> back_to_back_twins(const TriangleMesh& mesh) {
+  std::map<std::array<std::uint32_t, 3>, std::vector<std::uint32_t>> unpaired;  // sorted corners -> triangles
+  std::vector<std::uint32_t> twin(mesh.triangles.size(), kNoTwin);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    std::array<std::uint32_t, 3> key{tri[0], tri[1], tri[2]};
+    std::sort(key.begin(), key.end());
+    std::vector<std::uint32_t>& candidates = unpaired[key];
+    const Triangle reversed{tri[0], tri[2], tri[1]};
+    const auto match = std::find_if(candidates.begin(), candidates.end(), [&](std::uint32_t u) {
+      const Triangle& other = mesh.triangles[u];
+      for (int k = 0; k < 3; ++k)
+        if (other[k] == reversed[0] && other[(k + 1) % 3] == reversed[1]) return true;
+      return false;
+    });
+    if (match == candidates.end()) {
+      candidates.push_back(t);
+    } else {
+      twin[t] = *match;
+      candidates.erase(match);
+    }
+  }
+  return twin;
+}
+
+// `mesh` without the later triangle of each back-to-back pair, into `sheet` (same vertices);
+// returns one flag per triangle of `sheet`: 1 when its twin was dropped.
+std::vector<char> drop_twins(const TriangleMesh& mesh, TriangleMesh& sheet) {
+  const std::vector<std::uint32_t> twin = back_to_back_twins(mesh);
+  sheet.positions = mesh.positions;
+  sheet.triangles.clear();
+  std::vector<std::uint32_t> sheet_index(mesh.triangles.size(), kNoTwin);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    if (twin[t] == kNoTwin) {
+      sheet_index[t] = static_cast<std::uint32_t>(sheet.triangles.size());
+      sheet.triangles.push_back(mesh.triangles[t]);
+    }
+  std::vector<char> doubled(sheet.triangles.size(), 0);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    if (twin[t] != kNoTwin) doubled[sheet_index[twin[t]]] = 1;
+  return doubled;
+}
+
+// Groups of triangles that lie in one plane (within `tolerance`, model units), share `kind`
+// and are joined by edges that exactly two triangles use, as one id per triangle: cutting may
+// then re-triangulate a flat face as a whole instead of triangle by triangle.
+std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> users;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
@@ -301,7 +349,8 @@ std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, double tole
                        [&](std::uint32_t v) { return std::abs(n.dot(mesh.positions[v] - p)) <= tolerance; });
   };
   for (const auto& [edge, triangles] : users)
-    if (triangles.size() == 2 && flat(triangles[0], triangles[1]) && flat(triangles[1], triangles[0]))
+    if (triangles.size() == 2 && kind[triangles[0]] == kind[triangles[1]] && flat(triangles[0], triangles[1]) &&
+        flat(triangles[1], triangles[0]))
       group[root(triangles[0])] = root(triangles[1]);
   for (std::uint32_t t = 0; t < group.size(); ++t) group[t] = root(t);
   return group;
@@ -376,8 +425,13 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
 }
 
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
-  TriangleMesh cut = mesh;
-  std::vector<std::uint32_t> origin = coplanar_groups(mesh, 1e-6 * eps);
+  TriangleMesh cut;
+  // Back-to-back double faces are cut as one sheet and doubled again at the end, so both sides
+  // stay exact duplicates (and their edges manifold for the merge below).
+  const std::vector<char> doubled = drop_twins(mesh, cut);
+  const std::vector<std::uint32_t> group = coplanar_groups(cut, doubled, 1e-6 * eps);
+  std::vector<std::uint32_t> origin(cut.triangles.size());  // sheet triangle of each fragment
+  std::iota(origin.begin(), origin.end(), 0u);
   std::vector<std::vector<double>> planes;
   for (const GridDirection& direction : grid.directions) {
     std::vector<double> offsets;
@@ -387,21 +441,30 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
   }
   std::vector<std::vector<std::size_t>> slabs(cut.triangles.size());
   std::map<std::vector<std::size_t>, std::uint32_t> cells;  // slab tuple -> label
-  std::vector<std::uint32_t> label(cut.triangles.size());
+  std::vector<std::uint32_t> label(cut.triangles.size()), face(cut.triangles.size());
   for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
     for (std::size_t i = 0; i < grid.directions.size(); ++i)
       slabs[t].push_back(slab_of(cut, t, grid.directions[i].direction, planes[i]));
     label[t] = cells.try_emplace(slabs[t], static_cast<std::uint32_t>(cells.size())).first->second;
+    face[t] = group[origin[t]];
   }
   // The planes cut whole triangles, and one plane after another: join the fragments of each
   // flat face of the exemplar within a cell again, keeping the exemplar's vertices and only
   // those cut vertices where the cell borders turn or meet an edge between faces.
   std::vector<char> pinned(cut.positions.size(), 0);
   std::fill(pinned.begin(), pinned.begin() + static_cast<std::ptrdiff_t>(mesh.positions.size()), 1);
-  MergedFragments merged = merge_fragments(cut, origin, label, pinned, false, true);
-  GridCut result{std::move(merged.mesh), {}};
-  result.slabs.reserve(result.mesh.triangles.size());
-  for (std::uint32_t t : merged.representative) result.slabs.push_back(slabs[t]);
+  const MergedFragments merged = merge_fragments(cut, face, label, pinned, false, true);
+  GridCut result;
+  result.mesh.positions = merged.mesh.positions;
+  for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+    const Triangle& tri = merged.mesh.triangles[t];
+    const std::uint32_t r = merged.representative[t];
+    result.mesh.triangles.push_back(tri);
+    result.slabs.push_back(slabs[r]);
+    if (!doubled[origin[r]]) continue;
+    result.mesh.triangles.push_back({tri[0], tri[2], tri[1]});
+    result.slabs.push_back(slabs[r]);
+  }
   return result;
 }
 

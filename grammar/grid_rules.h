@@ -91,7 +91,8 @@ struct GridCut {
 /// plane are moved onto it). Each flat face of `mesh` (edge-joined triangles in one plane within
 /// 1e-6 eps) is then re-triangulated per cell, keeping the vertices of `mesh` and only those cut
 /// vertices where cell borders turn or meet an edge between faces, so the copies of a unit
-/// meet at the same seam vertices wherever the exemplar repeats.
+/// meet at the same seam vertices wherever the exemplar repeats. Back-to-back double faces
+/// (the same corners in both orders) are cut once and doubled, so they stay exact doubles.
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps);
 
 /// A piece of a grid: the triangles whose slab classes along the directions are `classes`.

@@ -9,6 +9,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
+#include <set>
+
 using dg::Vec3;
 
 namespace {
@@ -51,4 +55,22 @@ TEST_CASE("grid cut: a long bar's faces come back as one quad per cell", "[gramm
     CHECK(dg::is_closed_and_oriented(resized));
     CHECK(resized.area() == Approx(4.0 * (count + 1) + 2.0).epsilon(1e-12));
   }
+}
+
+TEST_CASE("grid cut: a back-to-back double face is cut alike on both sides", "[grammar][grid]") {
+  // A long rectangle in z = 0 and the same rectangle facing down, on the same vertices.
+  dg::TriangleMesh sheet;
+  sheet.positions = {{0, 0, 0}, {10, 0, 0}, {10, 1, 0}, {0, 1, 0}};
+  sheet.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 2, 1}, {0, 3, 2}};
+  const dg::GridCut cut = dg::cut_along_grid(sheet, bar_grid(9), 0.1);
+  // One quad per cell on each side.
+  CHECK(cut.mesh.triangles.size() == 11 * 2 * 2);
+  CHECK(cut.mesh.area() == Approx(sheet.area()).epsilon(1e-12));
+  std::multiset<std::array<std::uint32_t, 3>> up, down;
+  for (std::size_t t = 0; t < cut.mesh.triangles.size(); ++t) {
+    std::array<std::uint32_t, 3> corners{cut.mesh.triangles[t][0], cut.mesh.triangles[t][1], cut.mesh.triangles[t][2]};
+    std::sort(corners.begin(), corners.end());
+    (cut.mesh.area_vector(t).z() > 0.0 ? up : down).insert(corners);
+  }
+  CHECK(up == down);
 }
