@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -58,6 +60,19 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
   std::ifstream report(folder / "fence" / "fence_4.report.md");
   const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(text.find("Picture: `fence_4.sites.png`") != std::string::npos);
+
+  // --json lists the pictures written, each on disk.
+  const dg::test::CliRun json = dg::test::run_cli("analyze " + std::string(DOCKGRAMMAR_SOURCE_DIR) +
+                                                      "/assets/models/fence_4.obj -q --json -o " + (folder / "json").string(),
+                                                  folder);
+  REQUIRE(json.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(json.output);
+  std::set<std::string> listed;
+  for (const auto& png : summary.at("pictures")) {
+    CHECK(fs::exists(png.get<std::string>()));
+    listed.insert(fs::path(png.get<std::string>()).filename().string());
+  }
+  CHECK(listed == std::set<std::string>{"fence_4.grid1.png", "fence_4.rules.png", "fence_4.sites.png"});
 
   // The gear's rotations leave no docking site: no picture, and the report names none.
   const dg::test::AnalyzedModel gear = dg::test::analyze_model("gear_12", folder / "gear");

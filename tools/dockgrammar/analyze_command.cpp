@@ -74,9 +74,10 @@ void add_analyze_command(CLI::App& app) {
     std::string stem = std::filesystem::path(options->model.model_path).stem().string();
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
-    AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path};
-    write_analysis_report(folder / (stem + ".report.md"), report);
-    write_analysis_pictures(folder, stem, report);
+    AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
+                          folder / (stem + ".report.md"), {}};
+    write_analysis_report(report.report_path, report);
+    report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)
       fmt::print("{}\n", analysis_json(report).dump(2));
     else

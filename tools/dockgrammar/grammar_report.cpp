@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace dg::cli {
 namespace {
@@ -182,8 +183,18 @@ std::string analysis_text(const AnalysisReport& report) {
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
                        cf.productions.size(), generate_rules_text(report));
-  out += fmt::format("grammar written to {}\nnot built: {}\n", report.grammar_path.string(), kMissing);
+  out += fmt::format("grammar written to {}, report to {}\n", report.grammar_path.string(), report.report_path.string());
+  std::string pictures;
+  for (const std::filesystem::path& png : report.pictures) pictures += (pictures.empty() ? "" : ", ") + png.filename().string();
+  if (!pictures.empty()) out += fmt::format("pictures (and coloured .ply of each): {}\n", pictures);
+  out += fmt::format("not built: {}\n", kMissing);
   return out;
+}
+
+nlohmann::json pictures_json(const AnalysisReport& report) {
+  nlohmann::json pictures = nlohmann::json::array();
+  for (const std::filesystem::path& png : report.pictures) pictures.push_back(png.string());
+  return pictures;
 }
 
 nlohmann::json analysis_json(const AnalysisReport& report) {
@@ -217,6 +228,8 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"productions", productions_json(report.grammar.context_free)},
           {"grids", grids},
           {"grammar_file", report.grammar_path.string()},
+          {"report_file", report.report_path.string()},
+          {"pictures", pictures_json(report)},
           {"timings_s", timings_json(report)},
           {"missing", kMissing}};
 }
@@ -260,9 +273,10 @@ namespace {
 
 // NAME.rules.png/.ply: the exemplar rebuilt from its own productions, each piece coloured by
 // the non-terminal it fills (the axiom's terminal light grey), like the paper's Figure 8.
-void write_rules_picture(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report) {
+std::optional<std::filesystem::path> write_rules_picture(const std::filesystem::path& folder, const std::string& stem,
+                                                         const AnalysisReport& report) {
   const ContextFreeGrammar& cf = report.grammar.context_free;
-  if (cf.empty()) return;
+  if (cf.empty()) return std::nullopt;
   ShapeDerivationOptions options;
   options.exemplar_only = true;
   options.weld_seams = false;
@@ -277,11 +291,14 @@ void write_rules_picture(const std::filesystem::path& folder, const std::string&
   write_mesh(folder / (stem + ".rules.ply"), d.mesh, &vertex_colors);
   write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {},
                      picture_options(report.prepared.model.mesh, report.grammar.up_axis));
+  return folder / (stem + ".rules.png");
 }
 
 }  // namespace
 
-void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report) {
+std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem,
+                                                           const AnalysisReport& report) {
+  std::vector<std::filesystem::path> written;
   const TriangleMesh& mesh = report.prepared.model.mesh;
   for (const GridWithPieces& grid : report.grammar.grids) {
     const GridCut grid_cut = cut_along_grid(mesh, grid.rule, report.grammar.eps);
@@ -307,10 +324,15 @@ void write_analysis_pictures(const std::filesystem::path& folder, const std::str
     write_mesh(folder / (stem + "." + grid.rule.name + ".ply"), cut, &vertex_colors);
     write_mesh_picture(folder / (stem + "." + grid.rule.name + ".png"), cut, colors, {},
                        picture_options(mesh, report.grammar.up_axis));
+    written.push_back(folder / (stem + "." + grid.rule.name + ".png"));
   }
-  write_rules_picture(folder, stem, report);
-  write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,
-                             report.docking, report.grammar.up_axis);
+  if (const auto rules = write_rules_picture(folder, stem, report)) written.push_back(*rules);
+  if (!report.docking.sites.empty()) {
+    write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,
+                               report.docking, report.grammar.up_axis);
+    written.push_back(folder / (stem + ".sites.png"));
+  }
+  return written;
 }
 
 }  // namespace dg::cli

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace dg::cli {
 
@@ -22,6 +23,8 @@ struct AnalysisReport {
   ContextFreeStats context_free;             ///< what became of the docking sites
   std::vector<StageTiming> grammar_timings;  ///< grid rules, docking sites, context-free rules
   std::filesystem::path grammar_path;
+  std::filesystem::path report_path;
+  std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
 };
 
 /// Short readable summary for stdout.
@@ -37,6 +40,8 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
 /// NAME.<grid>.png and NAME.<grid>.ply: the model coloured by grid piece class (corners, borders,
 /// interior; repeated units in alternating shades), for every grid, and NAME.rules.png/.ply; the
 /// pictures look at the model with the grammar's up axis (guessed when it has none).
-void write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem, const AnalysisReport& report);
+/// Returns the PNG files it wrote.
+std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem,
+                                                           const AnalysisReport& report);
 
 }  // namespace dg::cli
