@@ -43,8 +43,9 @@ void write_docking_site_picture(const std::filesystem::path& png, const std::fil
   for (std::size_t index : order) {
     const DockingSite& site = docking.sites[index];
     const auto [fill, curve] = operation_colors(site);
+    const bool outline_only = 2 * site.docker.size() > surface.cell_count();
     for (std::uint32_t c : site.docker) {
-      cell_color[c] = fill;
+      if (!outline_only) cell_color[c] = fill;
       in_docker[c] = 1;
     }
     for (std::uint32_t c : site.site) {

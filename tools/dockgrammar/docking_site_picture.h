@@ -13,7 +13,8 @@ namespace dg::cli {
 /// light grey, with every docker D filled in its operation's colour (insert green, delete red,
 /// replace blue; slippable sites grey, they make no rule) and its docking site, the band cells
 /// touching D, in a dark shade of that colour, so the sites read as curves around the dockers.
-/// Larger dockers are painted first, so nested sites stay visible. `up_axis` as for
+/// Larger dockers are painted first, so nested sites stay visible; a docker covering more than
+/// half of the model is only outlined (filled, it would hide all the others). `up_axis` as for
 /// picture_options. Writes nothing when there is no docking site.
 void write_docking_site_picture(const std::filesystem::path& png, const std::filesystem::path& ply,
                                 const PreparedModel& prepared, const DockingSiteResult& docking,

@@ -122,7 +122,8 @@ std::string context_free_markdown(const AnalysisReport& report) {
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }),
       report.docking.sites.empty() ? ""
                                    : fmt::format(" Picture: `{}.sites.png` (dockers filled, their docking sites dark around "
-                                                 "them: insert green, delete red, replace blue, slippable grey).",
+                                                 "them: insert green, delete red, replace blue, slippable grey; a docker "
+                                                 "covering more than half the model is only outlined).",
                                                  report.grammar_path.stem().stem().string()));
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
