@@ -465,6 +465,9 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
     result.mesh.triangles.push_back({tri[0], tri[2], tri[1]});
     result.slabs.push_back(slabs[r]);
   }
+  std::vector<std::size_t> all(result.mesh.triangles.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  result.mesh = submesh(result.mesh, all);  // without the vertices the merge left unused
   return result;
 }
 

@@ -41,6 +41,7 @@ TEST_CASE("grid cut: a long bar's faces come back as one quad per cell", "[gramm
   const dg::GridCut cut = dg::cut_along_grid(bar, grid, 0.1);
   // 11 cells, each with four long faces of two triangles; the end cells add their end caps.
   CHECK(cut.mesh.triangles.size() == 11 * 8 + 2 * 2);
+  CHECK(cut.mesh.positions.size() == 8 + 10 * 4);  // the corners and four per plane, no unused one
   CHECK(cut.mesh.area() == Approx(bar.area()).epsilon(1e-12));
   CHECK(dg::is_closed_and_oriented(cut.mesh));
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(bar, grid, 0.1);
