@@ -23,6 +23,17 @@ constexpr const char* kMissing =
 // A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
 // ", 12 productions whose pieces hold a triangle cleaning drops ..." when context-free rules
 // were dropped for opening holes in a closed model; empty otherwise.
+// Docking sites that never became a pair of locations in the context-free stage, e.g. "; 171
+// more give no pair of locations (...)"; empty when there are none.
+std::string unpaired_sites_text(const AnalysisReport& report) {
+  const ContextFreeStats& stats = report.context_free;
+  const std::size_t accounted = stats.sites_used + stats.sites_without_fit + stats.sites_slippable;
+  if (report.docking.sites.size() <= accounted) return "";
+  return fmt::format("; {} more give no pair of locations (the docker and its image fall on one location, or the "
+                     "limit of {} locations, largest dockers first, was reached)",
+                     report.docking.sites.size() - accounted, ContextFreeOptions{}.max_nodes);
+}
+
 std::string holes_text(const ContextFreeStats& stats) {
   if (stats.productions_with_holes == 0 && !stats.axiom_with_holes) return "";
   return fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they would "
@@ -129,7 +140,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
                             report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                            holes_text(report.context_free));
+                            unpaired_sites_text(report) + holes_text(report.context_free));
   md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
@@ -180,7 +191,7 @@ std::string analysis_text(const AnalysisReport& report) {
   if (cf.empty())
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                       holes_text(report.context_free));
+                       unpaired_sites_text(report) + holes_text(report.context_free));
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
                        cf.productions.size(), generate_rules_text(report));
