@@ -96,7 +96,7 @@ TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resi
 
 // glTF defines +Y as up, so a .glb input is stored (and drawn) y-up even when its shape alone
 // suggests z (the fence is thinnest along y); the same mesh as OBJ keeps the shape's guess.
-TEST_CASE("up axis: glTF input is y-up by its specification; OBJ input is guessed", "[tools][pictures]") {
+TEST_CASE("up axis: glTF input is y-up by its specification, OBJ input is guessed", "[tools][pictures]") {
   const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-gltf-test");
   const dg::Model fence = dg::read_model(std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj");
   auto stored_up = [&](const std::string& file) {
