@@ -40,7 +40,7 @@ TEST_CASE("boundary of an open square is one loop split at its corners", "[geome
   for (const auto& line : lines.lines) CHECK(line.boundary);
 }
 
-TEST_CASE("a smooth sphere has no feature lines; a cylinder rim is a closed loop", "[geometry]") {
+TEST_CASE("a smooth sphere has no feature lines, a cylinder rim is a closed loop", "[geometry]") {
   const dg::TriangleMesh sphere = dg::test::make_sphere(Vec3::Zero(), 1.0, 30, 60);
   CHECK(dg::find_feature_edges(sphere).empty());
 

@@ -296,7 +296,7 @@ TEST_CASE("docking sites of the fence: insert at the far end, delete at the near
   CHECK(deletes == 2);
 }
 
-TEST_CASE("gear: no docker for its full rotation group; pipe tree: productions that recurse", "[grammar][context_free]") {
+TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse", "[grammar][context_free]") {
   {
     const Analysed gear = analyse("gear", {{"teeth", 12}});
     // Every rotation of the group maps the whole gear onto itself: nothing is non-symmetric,

@@ -295,7 +295,7 @@ TEST_CASE("bad scenes name the problem", "[growth]") {
   CHECK(error_of(R"({"lsystems": {"w": "axiom: F("}, "guides": [)" + guide + "]}").find("bad.json: lsystems.w:1") == 0);
 }
 
-TEST_CASE("the same seed gives the same growth; stochastic rules follow the seed", "[growth]") {
+TEST_CASE("the same seed gives the same growth, stochastic rules follow the seed", "[growth]") {
   const dg::GrowthScene streets =
       dg::read_growth_scene(std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/scenes/streets.json");
   dg::GrowthOptions one;

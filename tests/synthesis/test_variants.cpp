@@ -60,7 +60,7 @@ TEST_CASE("facade variants: seeded, independent of batch position, closed, verif
   CHECK(distinct > 5);
 }
 
-TEST_CASE("generate CLI: same seed, same files; different seed, different files", "[synthesis][variants]") {
+TEST_CASE("generate CLI: same seed, same files, different seed, different files", "[synthesis][variants]") {
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-generate-test");
   const dg::test::AnalyzedModel fence = dg::test::analyze_model("fence_4", folder);
   REQUIRE(fence.run.status == 0);

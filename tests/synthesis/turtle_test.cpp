@@ -28,7 +28,7 @@ TEST_CASE("the turtle draws, turns and moves with the corpus conventions", "[syn
   CHECK((end_of(back.strokes[1]) - dg::Vec2(0, 0)).norm() < 1e-12);
 }
 
-TEST_CASE("brackets restore position, heading and scale; scale multiplies lengths", "[synthesis]") {
+TEST_CASE("brackets restore position, heading and scale, scale multiplies lengths", "[synthesis]") {
   const dg::Drawing d = draw("axiom: F[+*F]F\nangle: 90\nscale: 0.5\nstep: 4\nheading: 90\n");
   REQUIRE(d.strokes.size() == 3);
   CHECK(end_of(d.strokes[0]).isApprox(dg::Vec2(0, 4)));
