@@ -141,7 +141,9 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
 
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
-                                bool straighten_open_borders, bool straighten_label_borders) {
+                                const FragmentMergeOptions& options) {
+  const bool straighten_open_borders = options.straighten_open_borders;
+  const bool straighten_label_borders = options.straighten_label_borders;
   const auto triangle_count = static_cast<std::uint32_t>(mesh.triangles.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t+k
   uses.reserve(3 * static_cast<std::size_t>(triangle_count));

@@ -19,21 +19,28 @@ struct MergedFragments {
   std::vector<std::uint32_t> representative;
 };
 
+/// Which more vertices merge_fragments may drop.
+struct FragmentMergeOptions {
+  /// A vertex inside one input triangle where two open edges meet in a straight line (the
+  /// border keeps its shape; a mesh welded to it later must close the T-junctions, see
+  /// resolve_t_junctions).
+  bool straighten_open_borders = false;
+  /// A vertex that is not pinned, has no open or non-manifold edge and where exactly two region
+  /// borders (edges between labels or between input triangles) meet in a straight line; it goes
+  /// from both regions beside it, so the mesh stays conforming (e.g. where a plane cut crossed
+  /// a fragment's own diagonal).
+  bool straighten_label_borders = false;
+};
+
 /// Re-triangulates the regions of `mesh` (fragments with equal `origin` and equal `label`,
 /// one of each per triangle, joined across edges used by exactly two triangles). Vertices
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
 /// kept; others only where an edge between different labels, or an edge not used by exactly
-/// two triangles, ends. With `straighten_open_borders`, a vertex inside one input triangle
-/// where two open edges meet in a straight line goes too (the border keeps its shape; a mesh
-/// welded to it later must close the T-junctions, see resolve_t_junctions).
-/// With `straighten_label_borders`, a vertex that is not pinned, has no open or non-manifold
-/// edge and where exactly two region borders (edges between labels or between input
-/// triangles) meet in a straight line goes as well, from both regions beside it, so the mesh
-/// stays conforming (e.g. where a plane cut crossed a fragment's own diagonal).
+/// two triangles, ends; `options` lets some of those go too.
 /// A region whose re-triangulation does not reproduce its area (within 1e-9 relative) keeps its
 /// fragments. Deterministic.
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
-                                bool straighten_open_borders = false, bool straighten_label_borders = false);
+                                const FragmentMergeOptions& options = {});
 
 }  // namespace dg

@@ -1,6 +1,7 @@
 #include "geometry/submesh.h"
 
 #include <cstdint>
+#include <numeric>
 
 namespace dg {
 
@@ -21,6 +22,12 @@ TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& t
     part.triangles.push_back(mapped);
   }
   return part;
+}
+
+TriangleMesh without_unused_vertices(const TriangleMesh& mesh) {
+  std::vector<std::size_t> all(mesh.triangles.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  return submesh(mesh, all);
 }
 
 TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion) {

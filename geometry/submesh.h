@@ -12,6 +12,10 @@ namespace dg {
 /// use, renumbered in first-use order.
 TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles);
 
+/// `mesh` without the vertices no triangle uses (triangles in order, vertices renumbered in
+/// first-use order).
+TriangleMesh without_unused_vertices(const TriangleMesh& mesh);
+
 /// `mesh` moved by a rigid motion.
 TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion);
 

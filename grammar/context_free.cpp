@@ -524,10 +524,9 @@ class Builder {
     }
     for (std::size_t c : children)
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
-    TriangleMesh merged = merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners, true).mesh;
-    std::vector<std::size_t> all(merged.triangles.size());
-    std::iota(all.begin(), all.end(), 0);
-    return submesh(merged, all);  // drops the vertices the merge left unused
+    const TriangleMesh merged =
+        merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners, {.straighten_open_borders = true}).mesh;
+    return without_unused_vertices(merged);
   }
 
   // The production of `node` (kNone: the axiom) with the given children; children must have

@@ -453,7 +453,7 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
   // those cut vertices where the cell borders turn or meet an edge between faces.
   std::vector<char> pinned(cut.positions.size(), 0);
   std::fill(pinned.begin(), pinned.begin() + static_cast<std::ptrdiff_t>(mesh.positions.size()), 1);
-  const MergedFragments merged = merge_fragments(cut, face, label, pinned, false, true);
+  const MergedFragments merged = merge_fragments(cut, face, label, pinned, {.straighten_label_borders = true});
   GridCut result;
   result.mesh.positions = merged.mesh.positions;
   for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
@@ -465,9 +465,7 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
     result.mesh.triangles.push_back({tri[0], tri[2], tri[1]});
     result.slabs.push_back(slabs[r]);
   }
-  std::vector<std::size_t> all(result.mesh.triangles.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
-  result.mesh = submesh(result.mesh, all);  // without the vertices the merge left unused
+  result.mesh = without_unused_vertices(result.mesh);
   return result;
 }
 

@@ -59,7 +59,7 @@ TEST_CASE("fragment merge: a diced square keeps only its label border", "[geomet
 TEST_CASE("fragment merge: one label and straightened open borders give back the two triangles", "[geometry][fragment_merge]") {
   const dg::ZoneCut cut = diced_square();
   const std::vector<std::uint32_t> label(cut.mesh.triangles.size(), 0);
-  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), true);
+  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), {.straighten_open_borders = true});
   CHECK(merged.mesh.triangles.size() == 2);
   CHECK(merged.mesh.area() == Approx(1.0).epsilon(1e-12));
   // Without straightening, the vertices on the open outline stay.
@@ -72,7 +72,7 @@ TEST_CASE("fragment merge: straightened label borders keep only the vertices whe
   const dg::ZoneCut cut = diced_square();
   std::vector<std::uint32_t> label(cut.mesh.triangles.size());
   for (std::size_t t = 0; t < label.size(); ++t) label[t] = centroid(cut.mesh, t).x() < 0.5 ? 0 : 1;
-  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), false, true);
+  const dg::MergedFragments merged = dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), {.straighten_label_borders = true});
   // Inside the open outline (40 vertices, every 0.1) only (0.5, 0.5) stays, where the label
   // border x = 0.5 crosses the square's diagonal: 2 * 1 + 40 - 2 = 40 triangles.
   CHECK(merged.mesh.triangles.size() == 40);

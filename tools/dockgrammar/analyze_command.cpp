@@ -76,7 +76,7 @@ void add_analyze_command(CLI::App& app) {
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
                           folder / (stem + ".report.md"), {}};
-    write_analysis_report(report.report_path, report);
+    write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)
       fmt::print("{}\n", analysis_json(report).dump(2));

@@ -25,10 +25,10 @@ std::pair<Rgb, Rgb> operation_colors(const DockingSite& site) {
 
 }  // namespace
 
-void write_docking_site_picture(const std::filesystem::path& png, const std::filesystem::path& ply,
+bool write_docking_site_picture(const std::filesystem::path& png, const std::filesystem::path& ply,
                                 const PreparedModel& prepared, const DockingSiteResult& docking,
                                 const std::string& up_axis) {
-  if (docking.sites.empty()) return;
+  if (docking.sites.empty()) return false;
   const VoxelSurface& surface = prepared.surface;
   std::vector<std::uint32_t> piece_cells;
   const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
@@ -66,6 +66,7 @@ void write_docking_site_picture(const std::filesystem::path& png, const std::fil
   MeshRenderOptions options = picture_options(prepared.model.mesh, up_axis);
   options.draw_edges = false;  // the cell pieces would outline every voxel
   write_mesh_picture(png, pieces, triangle_colors, {}, options);
+  return true;
 }
 
 }  // namespace dg::cli

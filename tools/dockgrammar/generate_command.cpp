@@ -1,7 +1,6 @@
 // `dockgrammar generate GRAMMAR --count N [--seed S] -o DIR [--format obj|ply|glb]`.
 
 #include "tools/dockgrammar/commands.h"
-#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
@@ -9,6 +8,7 @@
 #include "geometry/render_mesh.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/pictures.h"
 #include "synthesis/variants.h"
 
@@ -62,7 +62,7 @@ void add_generate_command(CLI::App& app) {
                       "Context-free: after this many triangles every slot gets the exemplar's production")
       ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
-      ->check(finite_number_check(false));
+      ->check(non_negative_number());
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command

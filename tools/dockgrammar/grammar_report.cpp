@@ -20,9 +20,9 @@ constexpr const char* kMissing =
     "grids of pure rotations (no slide along the axis) are not built; docking sites that slide along themselves, or whose docker "
     "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
 
-// A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
-// ", 12 productions whose pieces hold a triangle cleaning drops ..." when context-free rules
-// were dropped for opening holes in a closed model; empty otherwise.
+// NAME of the model's NAME.grammar.json, NAME.report.md and pictures.
+std::string model_stem(const AnalysisReport& report) { return report.grammar_path.stem().stem().string(); }
+
 // Docking sites that never became a pair of locations in the context-free stage, e.g. "; 171
 // more give no pair of locations (...)"; empty when there are none.
 std::string unpaired_sites_text(const AnalysisReport& report) {
@@ -34,6 +34,8 @@ std::string unpaired_sites_text(const AnalysisReport& report) {
                      report.docking.sites.size() - accounted, ContextFreeOptions{}.max_nodes);
 }
 
+// "; 12 production(s) were dropped because ..." when context-free rules were dropped for
+// opening holes in a closed model; empty otherwise.
 std::string holes_text(const ContextFreeStats& stats) {
   if (stats.productions_with_holes == 0 && !stats.axiom_with_holes) return "";
   return fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they would "
@@ -52,6 +54,7 @@ std::string kept_units_text(const GridDirection& d) {
   return fmt::format(" ({}: {} a little from the repeated unit)", kept, min_units(d) == 1 ? "it differs" : "they differ");
 }
 
+// A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
 std::string grid_motion_text(const GridDirection& d) {
   return describe_motion(d.motion, d.motion.angle() > 1e-9 ? "screw" : "translation");
 }
@@ -135,7 +138,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
                                    : fmt::format(" Picture: `{}.sites.png` (dockers filled, their docking sites dark around "
                                                  "them: insert green, delete red, replace blue, slippable grey; a docker "
                                                  "covering more than half the model is only outlined).",
-                                                 report.grammar_path.stem().stem().string()));
+                                                 model_stem(report)));
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
@@ -147,7 +150,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
                       std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }));
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
-                    report.grammar_path.stem().stem().string());
+                    model_stem(report));
   md += "\nProductions (terminal triangles, then the non-terminals they contain):\n\n";
   auto line = [&](const std::string& lhs, const ShapeProduction& p) {
     std::string children;
@@ -246,7 +249,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"missing", kMissing}};
 }
 
-void write_analysis_report(const std::filesystem::path& path, const AnalysisReport& report) {
+void write_analysis_report(const AnalysisReport& report) {
   const PreparedModel& prepared = report.prepared;
   const CleaningReport& c = prepared.cleaning;
   std::string md = fmt::format("# Analysis of {}\n\n", prepared.model.source_path);
@@ -272,13 +275,13 @@ void write_analysis_report(const std::filesystem::path& path, const AnalysisRepo
     std::string ranges;
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
       ranges += fmt::format("{}direction {}: {}..{}", i == 0 ? "" : ", ", i + 1, lowest_count(grid.rule, i), grid.rule.max_count);
-    md += fmt::format("\nAllowed counts: {}. Picture: `{}.png`.\n\n", ranges, path.stem().stem().string() + "." + grid.rule.name);
+    md += fmt::format("\nAllowed counts: {}. Picture: `{}.png`.\n\n", ranges, model_stem(report) + "." + grid.rule.name);
   }
   md += context_free_markdown(report);
   md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", kMissing);
   const nlohmann::json timings = timings_json(report);
   for (const auto& [stage, seconds] : timings.items()) md += fmt::format("- {}: {:.3f}\n", stage, seconds.get<double>());
-  write_file_atomically(path, [&](std::ostream& out) { out << md; }, false);
+  write_file_atomically(report.report_path, [&](std::ostream& out) { out << md; }, false);
 }
 
 namespace {
@@ -339,11 +342,9 @@ std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem
     written.push_back(folder / (stem + "." + grid.rule.name + ".png"));
   }
   if (const auto rules = write_rules_picture(folder, stem, report)) written.push_back(*rules);
-  if (!report.docking.sites.empty()) {
-    write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,
-                               report.docking, report.grammar.up_axis);
+  if (write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,
+                                 report.docking, report.grammar.up_axis))
     written.push_back(folder / (stem + ".sites.png"));
-  }
   return written;
 }
 

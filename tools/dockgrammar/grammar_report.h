@@ -34,12 +34,14 @@ std::string analysis_text(const AnalysisReport& report);
 /// grids: [{name, dims, counts, transforms, count_range, pieces}], grammar_file, timings_s, missing}.
 nlohmann::json analysis_json(const AnalysisReport& report);
 
-/// NAME.report.md: cleaning, symmetries, grids with counts and pieces, timings, what is missing.
-void write_analysis_report(const std::filesystem::path& path, const AnalysisReport& report);
+/// report.report_path (NAME.report.md): cleaning, symmetries, grids with counts and pieces,
+/// docking sites and context-free rules, pictures, timings, what is missing.
+void write_analysis_report(const AnalysisReport& report);
 
 /// NAME.<grid>.png and NAME.<grid>.ply: the model coloured by grid piece class (corners, borders,
-/// interior; repeated units in alternating shades), for every grid, and NAME.rules.png/.ply; the
-/// pictures look at the model with the grammar's up axis (guessed when it has none).
+/// interior; repeated units in alternating shades), for every grid; NAME.rules.png/.ply when
+/// there are context-free rules; NAME.sites.png/.ply when there are docking sites. The pictures
+/// look at the model with the grammar's up axis (guessed when it has none).
 /// Returns the PNG files it wrote.
 std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem::path& folder, const std::string& stem,
                                                            const AnalysisReport& report);

@@ -14,14 +14,14 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
       ->required();
   command.add_option("-r,--radius", options.prepare.r,
                      "Similarity radius r in model units (default: 1.6% of the longest bounding-box side)")
-      ->check(finite_number_check(false));
+      ->check(non_negative_number());
   command.add_option("--voxel", options.prepare.eps, "Voxel size in model units (default: r/4)")
-      ->check(finite_number_check(false));
+      ->check(non_negative_number());
   command.add_option("--sharp-angle", options.prepare.sharp_angle_degrees,
                      "Dihedral angle in degrees above which an edge is a feature edge")
       ->check(CLI::Range(0.0, 180.0))
       ->capture_default_str();
-  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(finite_number_check(false));
+  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");
 }

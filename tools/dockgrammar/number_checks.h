@@ -9,6 +9,7 @@
 namespace dg::cli {
 
 /// Accepts a finite number >= 0 (`positive`: > 0); otherwise a usage error naming the value.
+/// Use non_negative_number() or positive_number().
 inline CLI::Validator finite_number_check(bool positive) {
   return CLI::Validator(
       [positive](std::string& input) -> std::string {
@@ -19,5 +20,11 @@ inline CLI::Validator finite_number_check(bool positive) {
       },
       positive ? "POSITIVE" : "NONNEGATIVE");
 }
+
+/// A finite number >= 0.
+inline CLI::Validator non_negative_number() { return finite_number_check(false); }
+
+/// A finite number > 0.
+inline CLI::Validator positive_number() { return finite_number_check(true); }
 
 }  // namespace dg::cli

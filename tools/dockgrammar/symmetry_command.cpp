@@ -1,8 +1,8 @@
 // `dockgrammar symmetry MODEL`: partial rigid symmetries ordered by r-symmetric area.
 
 #include "tools/dockgrammar/commands.h"
-#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
@@ -22,7 +22,7 @@ void add_symmetry_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
   add_model_options(*command, options->model);
-  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(finite_number_check(true));
+  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(positive_number());
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
   add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y");
   command->callback([options] {
@@ -30,8 +30,8 @@ void add_symmetry_command(CLI::App& app) {
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
     const SymmetryResult result = detect_symmetries(prepared, {}, progress);
-    if (!options->output.empty()) write_symmetry_pictures(options->output, prepared, result, options->top,
-                                                               model_up_axis(options->model.model_path, options->up));
+    if (!options->output.empty())
+      write_symmetry_pictures(options->output, prepared, result, options->top, model_up_axis(options->model.model_path, options->up));
     if (options->model.json) {
       nlohmann::json out = symmetry_json(result, options->top);
       out["model"] = prepared.model.source_path;

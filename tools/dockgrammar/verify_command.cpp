@@ -3,8 +3,8 @@
 
 #include "synthesis/verify.h"
 #include "tools/dockgrammar/commands.h"
-#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -33,16 +33,16 @@ void add_verify_command(CLI::App& app) {
   command->add_option("CANDIDATE", options->candidate, "The model to check")->required();
   command->add_option("-r,--radius", options->verify.r,
                       "Similarity radius r in model units (default: 1.6% of the exemplar's longest bounding-box side)")
-      ->check(finite_number_check(false));
+      ->check(non_negative_number());
   command->add_option("--samples", options->verify.similarity.samples, "Test points on the candidate")
-      ->check(finite_number_check(true))
+      ->check(positive_number())
       ->capture_default_str();
   command->add_option("--seed", options->verify.similarity.seed, "Seed of the test points")->capture_default_str();
   command->add_option("--min-fraction", options->verify.min_similar_fraction,
                       "Smallest r-similar fraction that passes")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(finite_number_check(false));
+  command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->add_flag("--json", options->json, "Print machine-readable results on stdout");
   command->callback([options] {
