@@ -93,13 +93,17 @@ CleaningReport clean_mesh(TriangleMesh& mesh, const CleaningOptions& options) {
     for (std::uint32_t& index : t) index = welded_index[first[index]];
   }
 
+  const bool has_materials = mesh.has_materials();
   std::size_t kept = 0;
-  for (const Triangle& t : mesh.triangles) {
-    const bool degenerate = is_degenerate(mesh, t, options.collinear_tolerance);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const bool degenerate = is_degenerate(mesh, mesh.triangles[t], options.collinear_tolerance);
     report.degenerate_dropped += degenerate ? 1 : 0;
-    if (!degenerate || !options.drop_degenerate) mesh.triangles[kept++] = t;
+    if (degenerate && options.drop_degenerate) continue;
+    if (has_materials) mesh.materials[kept] = mesh.materials[t];
+    mesh.triangles[kept++] = mesh.triangles[t];
   }
   mesh.triangles.resize(kept);
+  if (has_materials) mesh.materials.resize(kept);
 
   std::vector<bool> used(mesh.positions.size(), false);
   for (const Triangle& t : mesh.triangles) {

@@ -56,7 +56,8 @@ bool nearly_collinear(const Vec3& a, const Vec3& b, const Vec3& c, double collin
 
 /// Cleans `mesh` in place: welds vertices with exactly equal positions (the first occurrence
 /// keeps its place; surviving vertices keep their relative order), drops degenerate triangles,
-/// then drops vertices no triangle uses. Triangle order is kept. Positions must be finite.
+/// then drops vertices no triangle uses. Triangle order (and each triangle's material) is kept.
+/// Positions must be finite.
 CleaningReport clean_mesh(TriangleMesh& mesh, const CleaningOptions& options = {});
 
 /// Cleans `cloud` in place: drops points whose normal is non-finite or zero (when normals exist),

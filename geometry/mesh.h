@@ -8,10 +8,26 @@
 
 namespace dg {
 
+/// A surface material as the model file names it (OBJ `usemtl` / MTL `newmtl`, glTF material),
+/// with the colour it shows: MTL `Kd` or glTF `baseColorFactor`, linear RGB in 0..1.
+struct Material {
+  std::string name;
+  Vec3 diffuse = Vec3::Constant(0.8);
+
+  friend bool operator==(const Material&, const Material&) = default;
+};
+
 /// Indexed triangle mesh in model units. Triangles are counter-clockwise seen from the front.
 struct TriangleMesh {
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
+  /// Material of each triangle: an index into the material list that travels with the mesh
+  /// (Model::materials, a grammar's materials), or empty when the model names no materials.
+  /// Whatever builds triangles out of other triangles gives each piece its source's material.
+  std::vector<std::uint32_t> materials;
+
+  /// True when every triangle carries a material index.
+  bool has_materials() const { return !materials.empty() && materials.size() == triangles.size(); }
 
   /// Bounding box of all positions (also of unreferenced ones).
   BoundingBox bounds() const;
@@ -39,6 +55,7 @@ struct Model {
   std::string source_path;  ///< file it was read from ("" when built in code)
   TriangleMesh mesh;
   PointCloud cloud;
+  std::vector<Material> materials;  ///< indexed by mesh.materials; empty when the file named none
 
   /// True when the model is a point cloud (no triangles, points only).
   bool is_point_cloud() const { return mesh.triangles.empty() && !cloud.positions.empty(); }

@@ -158,14 +158,18 @@ std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, c
     }
     remap[v] = found;
   }
-  std::vector<Triangle> triangles;
-  triangles.reserve(mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles) {
-    const Triangle w{remap[t[0]], remap[t[1]], remap[t[2]]};
-    if (w[0] != w[1] && w[1] != w[2] && w[2] != w[0]) triangles.push_back(w);
+  const bool has_materials = mesh.has_materials();
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& old = mesh.triangles[t];
+    const Triangle w{remap[old[0]], remap[old[1]], remap[old[2]]};
+    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;
+    if (has_materials) mesh.materials[count] = mesh.materials[t];
+    mesh.triangles[count++] = w;
   }
   mesh.positions = std::move(kept);
-  mesh.triangles = std::move(triangles);
+  mesh.triangles.resize(count);
+  if (has_materials) mesh.materials.resize(count);
   return remap;
 }
 

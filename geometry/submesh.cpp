@@ -20,6 +20,7 @@ TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& t
       mapped[k] = static_cast<std::uint32_t>(remap[v]);
     }
     part.triangles.push_back(mapped);
+    if (mesh.has_materials()) part.materials.push_back(mesh.materials[t]);
   }
   return part;
 }
@@ -37,9 +38,14 @@ TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion)
 }
 
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
+  const bool keep_materials = (mesh.triangles.empty() || mesh.has_materials()) && (part.triangles.empty() || part.has_materials());
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
   mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
   for (const Triangle& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  if (keep_materials)
+    mesh.materials.insert(mesh.materials.end(), part.materials.begin(), part.materials.end());
+  else
+    mesh.materials.clear();
 }
 
 }  // namespace dg

@@ -8,8 +8,8 @@
 
 namespace dg {
 
-/// The triangles of `mesh` listed in `triangles` (in that order) with only the vertices they
-/// use, renumbered in first-use order.
+/// The triangles of `mesh` listed in `triangles` (in that order, with their materials) with only
+/// the vertices they use, renumbered in first-use order.
 TriangleMesh submesh(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles);
 
 /// `mesh` without the vertices no triangle uses (triangles in order, vertices renumbered in
@@ -19,7 +19,8 @@ TriangleMesh without_unused_vertices(const TriangleMesh& mesh);
 /// `mesh` moved by a rigid motion.
 TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion);
 
-/// Appends `part` (vertices and triangles) to `mesh`.
+/// Appends `part` (vertices, triangles and materials) to `mesh`. Material indices are kept when
+/// both sides carry them (or one side has no triangles); otherwise the result has none.
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part);
 
 }  // namespace dg

@@ -141,7 +141,7 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
 
     std::vector<char> replaced(mesh.triangles.size(), 0);
     std::vector<std::pair<std::uint32_t, Triangle>> first_parts;
-    std::vector<Triangle> added;
+    std::vector<std::pair<std::uint32_t, Triangle>> added;  // (source triangle, part)
     std::vector<std::pair<double, std::uint32_t>> inner;
     for (const EdgeUse& use : edges) {
       const std::uint32_t t = use.triangle;
@@ -169,17 +169,19 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
         if (previous == a)
           first_parts.push_back({t, {a, v, c}});
         else
-          added.push_back({previous, v, c});
+          added.push_back({t, {previous, v, c}});
         previous = v;
       }
-      added.push_back({previous, b, c});
+      added.push_back({t, {previous, b, c}});
       splits += inner.size();
     }
     if (first_parts.empty()) break;
     for (const auto& [t, part] : first_parts) mesh.triangles[t] = part;
-    for (const Triangle& part : added) {
+    const bool has_materials = mesh.has_materials();
+    for (const auto& [source, part] : added) {
       candidates.push_back(static_cast<std::uint32_t>(mesh.triangles.size()));
       mesh.triangles.push_back(part);
+      if (has_materials) mesh.materials.push_back(mesh.materials[source]);
     }
   }
   return splits;
