@@ -379,14 +379,21 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   std::vector<GridDirection> translations, screws;
   for (const SymmetryFamily& family : symmetries.families) {
     if (family.kind != "translation" && family.kind != "screw") continue;
-    // Every member, not only the generator (power 1): a generator can be a motion that maps only
-    // outlines onto outlines (half a window pitch on a painted wall), while its square repeats whole units.
-    // Parallel members compete below; the one with the most units wins.
-    for (std::size_t m = 0; m < family.members.size(); ++m) {
+    // The generator first, then its powers until one gives a direction: a generator can be a
+    // motion that maps only outlines onto outlines (half a window pitch on a painted wall), while
+    // its square repeats whole units. Larger powers of a working generator would give fewer units.
+    std::vector<std::size_t> by_power(family.members.size());
+    std::iota(by_power.begin(), by_power.end(), std::size_t{0});
+    std::stable_sort(by_power.begin(), by_power.end(), [&](std::size_t a, std::size_t b) {
+      return std::abs(family.powers[a]) < std::abs(family.powers[b]);
+    });
+    for (std::size_t m : by_power) {
       const auto direction =
           grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
                          options.max_slab_asymmetry);
-      if (direction) (family.kind == "translation" ? translations : screws).push_back(*direction);
+      if (!direction) continue;
+      (family.kind == "translation" ? translations : screws).push_back(*direction);
+      break;
     }
   }
   // Most units first; then combine independent translations into one grid.
