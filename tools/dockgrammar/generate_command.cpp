@@ -97,7 +97,7 @@ void add_generate_command(CLI::App& app) {
       const Variant variant = build_variant(grammar, plan, variant_options);
       const TriangleMesh& mesh = variant.mesh;
       const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
-      write_mesh(folder / file, mesh);
+      write_mesh_with_materials(folder / file, mesh, grammar.materials);
       if (options->pictures)
         write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, {}, {}, picture);
       nlohmann::json grids = nlohmann::json::object();

@@ -1,0 +1,78 @@
+// `resize` and `generate` write the grammar's materials: OBJ with mtllib/usemtl and its MTL,
+// checked face by face against the material fence's ground truth.
+
+#include "grammar/grammar_file.h"
+#include "support/asset_grammar.h"
+#include "support/cli_run.h"
+#include "support/material_fence.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+using dg::Vec3;
+
+namespace {
+
+// Reads an OBJ written by dockgrammar (v, f, mtllib, usemtl lines) and checks that every face's
+// material is the fence's material at the face's centroid; returns the faces read.
+std::size_t check_obj_materials(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  REQUIRE(in);
+  const std::vector<std::string> names = {"wood", "metal", "cap"};
+  std::vector<Vec3> positions;
+  std::string line, library, material;
+  std::size_t faces = 0;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "mtllib") {
+      words >> library;
+    } else if (keyword == "usemtl") {
+      words >> material;
+    } else if (keyword == "v") {
+      Vec3 p;
+      words >> p.x() >> p.y() >> p.z();
+      positions.push_back(p);
+    } else if (keyword == "f") {
+      std::size_t a = 0, b = 0, c = 0;
+      words >> a >> b >> c;
+      const Vec3 centroid = (positions.at(a - 1) + positions.at(b - 1) + positions.at(c - 1)) / 3.0;
+      INFO("face " << faces << " at " << centroid.transpose());
+      CHECK(material == names[dg::test::fence_material_at(centroid)]);
+      ++faces;
+    }
+  }
+  CHECK(library == path.stem().string() + ".mtl");
+  std::ifstream mtl(path.parent_path() / library);
+  const std::string text((std::istreambuf_iterator<char>(mtl)), std::istreambuf_iterator<char>());
+  CHECK(text.find("newmtl wood\nKd 0.55 0.35 0.2\n") != std::string::npos);
+  CHECK(text.find("newmtl metal\nKd 0.5 0.5 0.55\n") != std::string::npos);
+  CHECK(text.find("newmtl cap\nKd 0.1 0.1 0.1\n") != std::string::npos);
+  return faces;
+}
+
+}  // namespace
+
+TEST_CASE("materials: resize and generate write OBJ with the exemplar's materials", "[tools][materials]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-cli-test");
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_fence(4), false);
+  REQUIRE(grammar.grids.size() == 1);
+  dg::write_grammar(folder / "fence.grammar.json", grammar);
+  const std::string grammar_file = (folder / "fence.grammar.json").string();
+
+  const dg::test::CliRun resize = dg::test::run_cli("resize " + grammar_file + " --grid grid1=6 -q -o " +
+                                                        (folder / "wide.obj").string(), folder);
+  REQUIRE(resize.status == 0);
+  CHECK(check_obj_materials(folder / "wide.obj") > 0);
+
+  const dg::test::CliRun generate =
+      dg::test::run_cli("generate " + grammar_file + " --count 2 --seed 3 -q -o " + (folder / "variants").string(), folder);
+  REQUIRE(generate.status == 0);
+  for (const std::string name : {"variant_00000.obj", "variant_00001.obj"}) {
+    INFO(name);
+    CHECK(check_obj_materials(folder / "variants" / name) > 0);
+  }
+}
