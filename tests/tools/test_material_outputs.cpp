@@ -1,6 +1,7 @@
 // `resize` and `generate` write the grammar's materials: OBJ with mtllib/usemtl and its MTL,
 // checked face by face against the material fence's ground truth.
 
+#include "geometry/png_reader.h"
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
@@ -54,6 +55,13 @@ std::size_t check_obj_materials(const std::filesystem::path& path) {
   return faces;
 }
 
+// Pixels of a PNG clearly redder than blue (the fence's wood; grey and white are not).
+std::size_t brownish_pixels(const std::filesystem::path& png) {
+  std::size_t count = 0;
+  for (const dg::Rgba8& p : dg::read_png(png).pixels) count += p.r > p.b + 40 ? 1 : 0;
+  return count;
+}
+
 }  // namespace
 
 TEST_CASE("materials: resize and generate write OBJ with the exemplar's materials", "[tools][materials]") {
@@ -75,4 +83,20 @@ TEST_CASE("materials: resize and generate write OBJ with the exemplar's material
     INFO(name);
     CHECK(check_obj_materials(folder / "variants" / name) > 0);
   }
+}
+
+TEST_CASE("materials: resize pictures show the materials' colours", "[tools][materials]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-picture-test");
+  dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_fence(4), false);
+  dg::write_grammar(folder / "coloured.grammar.json", grammar);
+  grammar.materials.clear();
+  dg::write_grammar(folder / "plain.grammar.json", grammar);
+  for (const std::string name : {"coloured", "plain"}) {
+    const dg::test::CliRun run = dg::test::run_cli("resize " + (folder / (name + ".grammar.json")).string() +
+                                                       " --grid grid1=5 --picture -q -o " + (folder / (name + ".obj")).string(),
+                                                   folder);
+    REQUIRE(run.status == 0);
+  }
+  CHECK(brownish_pixels(folder / "coloured.png") > 1000);
+  CHECK(brownish_pixels(folder / "plain.png") == 0);
 }
