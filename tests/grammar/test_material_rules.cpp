@@ -1,10 +1,10 @@
 // Grid pieces and context-free terminals keep the exemplar's materials, and the grammar file
-// keeps them: checked against the material fence's ground truth (tests/support/material_fence).
+// keeps them: checked against the material fence's ground truth (tests/support/material_models.h).
 
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
-#include "support/material_fence.h"
+#include "support/material_models.h"
 #include "synthesis/shape_derivation.h"
 
 #include <catch2/catch.hpp>

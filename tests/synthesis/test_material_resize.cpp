@@ -1,49 +1,70 @@
 // A resized grid gives every triangle the material of the exemplar surface it copies: checked
-// against the material fence's ground truth (tests/support/material_fence).
+// against the ground truth of the material fence and facade (tests/support/material_models.h).
 
 #include "synthesis/grid_resize.h"
 
 #include "support/asset_grammar.h"
-#include "support/material_fence.h"
+#include "support/material_models.h"
 
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 
 using dg::Vec3;
 
 namespace {
 
-// Surface area per material of a mesh with the material fence's three materials.
+// Surface area per material of a mesh with three materials.
 std::array<double, 3> area_by_material(const dg::TriangleMesh& mesh) {
   std::array<double, 3> area{};
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) area[mesh.materials[t]] += 0.5 * mesh.area_vector(t).norm();
   return area;
 }
 
+// Resizes the grammar's only grid to `counts` and checks every triangle's material against
+// `rule` at its centroid and normal, and each material's area against the generator's model `expected`.
+template <class Rule>
+void check_resize(const dg::ShapeGrammar& grammar, const std::vector<int>& counts, Rule rule, const dg::Model& expected) {
+  REQUIRE(grammar.grids.size() == 1);
+  const dg::TriangleMesh resized =
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFraction * grammar.eps);
+  REQUIRE(resized.has_materials());
+  for (std::size_t t = 0; t < resized.triangles.size(); ++t) {
+    const auto [a, b, c] = resized.corners(t);
+    INFO("triangle " << t << " at " << ((a + b + c) / 3.0).transpose());
+    CHECK(resized.materials[t] == rule((a + b + c) / 3.0, resized.area_vector(t).normalized()));
+  }
+  const std::array<double, 3> want = area_by_material(expected.mesh), got = area_by_material(resized);
+  for (std::size_t m = 0; m < 3; ++m) CHECK(got[m] == Approx(want[m]).epsilon(1e-9));
+}
+
 }  // namespace
 
 TEST_CASE("materials: resizing the material fence keeps each surface's material", "[synthesis][grid][materials]") {
   const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_fence(4), false);
-  REQUIRE(grammar.grids.size() == 1);
-  REQUIRE(grammar.grids[0].rule.directions.size() == 1);
   for (const int count : {4, 7}) {
     INFO("count " << count);
-    const dg::TriangleMesh resized =
-        dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, {count}, dg::kSeamWeldFraction * grammar.eps);
-    REQUIRE(resized.has_materials());
-    for (std::size_t t = 0; t < resized.triangles.size(); ++t) {
-      const auto [a, b, c] = resized.corners(t);
-      INFO("triangle " << t << " at " << ((a + b + c) / 3.0).transpose());
-      CHECK(resized.materials[t] == dg::test::fence_material_at((a + b + c) / 3.0));
-    }
-    // Each material covers as much surface as on the generator's fence of that length.
-    const std::array<double, 3> expected = area_by_material(dg::test::material_fence(count).mesh);
-    const std::array<double, 3> got = area_by_material(resized);
-    for (std::size_t m = 0; m < 3; ++m) CHECK(got[m] == Approx(expected[m]).epsilon(1e-9));
+    check_resize(grammar, {count}, [](const Vec3& p, const Vec3& n) { return dg::test::fence_material_at(p, n); },
+                 dg::test::material_fence(count));
   }
   // Pieces without materials give a result without them.
   dg::GridWithPieces plain = grammar.grids[0];
   for (dg::GridPiece& piece : plain.pieces) piece.mesh.materials.clear();
   CHECK_FALSE(dg::resize_grid(plain.rule, plain.pieces, {5}, dg::kSeamWeldFraction * grammar.eps).has_materials());
+}
+
+TEST_CASE("materials: a facade resized to 5 x 7 has glass in every window and oak in every door", "[synthesis][grid][materials]") {
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_facade(3, 4), false);
+  REQUIRE(grammar.grids.size() == 1);
+  std::vector<int> counts;  // 5 columns along x, 7 rows along z
+  for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(std::abs(d.direction.x()) > 0.5 ? 5 : 7);
+  REQUIRE(counts.size() == 2);
+  check_resize(grammar, counts, dg::test::facade_material_at, dg::test::material_facade(5, 7));
+  // Every window and door of the larger facade is there: 5 x 7 windows and 5 doors, each back
+  // 1.2 x 1.5 and 1.4 x 2.6 m.
+  const dg::TriangleMesh resized =
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFraction * grammar.eps);
+  CHECK(area_by_material(resized)[dg::test::kGlass] == Approx(5 * 7 * 1.2 * 1.5).epsilon(1e-9));
+  CHECK(area_by_material(resized)[dg::test::kOak] == Approx(5 * 1.4 * 2.6).epsilon(1e-9));
 }

@@ -5,7 +5,7 @@
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
-#include "support/material_fence.h"
+#include "support/material_models.h"
 
 #include <catch2/catch.hpp>
 
