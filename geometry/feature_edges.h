@@ -12,7 +12,10 @@ namespace dg {
 /// triangles differ by more than this angle.
 inline constexpr double kDefaultSharpAngleDegrees = 35.0;
 
-enum class EdgeKind : std::uint8_t { boundary, sharp, non_manifold };
+/// boundary: one triangle; sharp: dihedral above the threshold; non_manifold: three or more
+/// triangles; material: a smooth edge between triangles of different materials (a window's outline
+/// drawn on a flat wall), a feature like a crease.
+enum class EdgeKind : std::uint8_t { boundary, sharp, non_manifold, material };
 
 /// An undirected mesh edge that feature lines and cells care about.
 struct FeatureEdge {
@@ -23,10 +26,12 @@ struct FeatureEdge {
   Vec3 normal = Vec3::Zero();     ///< unit average of the adjacent face normals
 };
 
-/// Boundary, sharp and non-manifold edges of a welded mesh, sorted by (v0, v1).
+/// Boundary, sharp and non-manifold edges of a welded mesh, sorted by (v0, v1); with
+/// `material_borders` (and a mesh that has materials), also the material-border edges.
 /// Exact duplicate triangles (same vertex set, either orientation) are counted once, so
 /// back-to-back double faces do not turn every edge into a feature.
 std::vector<FeatureEdge> find_feature_edges(const TriangleMesh& mesh,
-                                            double sharp_angle_degrees = kDefaultSharpAngleDegrees);
+                                            double sharp_angle_degrees = kDefaultSharpAngleDegrees,
+                                            bool material_borders = false);
 
 }  // namespace dg

@@ -29,6 +29,10 @@ struct VertexEdges {
 
 std::uint32_t other_end(const FeatureEdge& e, std::uint32_t v) { return e.v0 == v ? e.v1 : e.v0; }
 
+// Lines run along edges of one class: boundary, material border, or crease (sharp and
+// non-manifold edges chain together).
+EdgeKind line_class(EdgeKind kind) { return kind == EdgeKind::non_manifold ? EdgeKind::sharp : kind; }
+
 class LineTracer {
  public:
   LineTracer(const TriangleMesh& mesh, const std::vector<FeatureEdge>& features, double corner_angle_degrees)
@@ -54,7 +58,7 @@ class LineTracer {
     if (around_.degree(v) != 2) return -1;
     const std::uint32_t first = around_.edges[around_.offsets[v]];
     const std::uint32_t next = first == e ? around_.edges[around_.offsets[v] + 1] : first;
-    if ((features_[next].kind == EdgeKind::boundary) != (features_[e].kind == EdgeKind::boundary)) return -1;
+    if (line_class(features_[next].kind) != line_class(features_[e].kind)) return -1;
     const Vec3 in = (mesh_.positions[v] - mesh_.positions[other_end(features_[e], v)]).normalized();
     const Vec3 out = (mesh_.positions[other_end(features_[next], v)] - mesh_.positions[v]).normalized();
     if (in.dot(out) < cos_corner_) return -1;
@@ -66,6 +70,7 @@ class LineTracer {
   FeatureLine follow(std::uint32_t start, std::uint32_t e) {
     FeatureLine line;
     line.boundary = features_[e].kind == EdgeKind::boundary;
+    line.material = features_[e].kind == EdgeKind::material;
     line.vertices.push_back(start);
     std::uint32_t v = start;
     while (true) {
@@ -143,6 +148,7 @@ void sample_line(const TriangleMesh& mesh, std::uint32_t line_index, const Featu
     sample.line = line_index;
     sample.descriptor.dihedral_degrees = line.dihedrals[segment];
     sample.descriptor.boundary = line.boundary;
+    sample.descriptor.material = line.material;
     const std::size_t nearest = t < 0.5 ? segment : (segment + 1) % points.size();
     sample.descriptor.curvature = vertex_curvature(points, line.closed, nearest);
     samples.push_back(sample);

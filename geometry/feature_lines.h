@@ -1,5 +1,5 @@
 #pragma once
-// Feature lines: chains of sharp and boundary edges, resampled with local frames.
+// Feature lines: chains of sharp, boundary and material-border edges, resampled with local frames.
 // Symmetry detection pairs their samples to propose rigid transforms (paper 001 §4.1).
 
 #include "geometry/feature_edges.h"
@@ -18,7 +18,8 @@ struct FeatureLine {
   std::vector<Vec3> normals;            ///< unit surface normal per edge (vertices.size() - 1)
   std::vector<double> dihedrals;        ///< signed dihedral angle per edge, degrees
   bool closed = false;                  ///< last vertex connects back to the first
-  bool boundary = false;                ///< made of boundary edges (otherwise sharp/non-manifold)
+  bool boundary = false;                ///< made of boundary edges
+  bool material = false;                ///< made of material-border edges (neither: sharp/non-manifold)
   double length = 0.0;                  ///< model units
 };
 
@@ -27,6 +28,7 @@ struct FeatureDescriptor {
   double dihedral_degrees = 0.0;  ///< signed dihedral of the edge under the sample (0 on boundaries)
   double curvature = 0.0;         ///< turning angle per unit length of the line near the sample (rad/unit)
   bool boundary = false;          ///< lies on a boundary line
+  bool material = false;          ///< lies on a material-border line
 };
 
 /// A point on a feature line with an orthonormal frame (tangent along the line, normal =
@@ -46,8 +48,8 @@ struct FeatureLines {
 };
 
 /// Chains `features` (from find_feature_edges on the same welded mesh) into lines, split at
-/// junctions, at corners turning by more than `corner_angle_degrees`, and where boundary meets
-/// sharp edges; resamples each line at a spacing of about `spacing` model units (open lines get
+/// junctions, at corners turning by more than `corner_angle_degrees`, and where edges of different
+/// classes meet (boundary, material border, crease); resamples each line at a spacing of about `spacing` model units (open lines get
 /// both end points). Deterministic: the result depends only on the inputs.
 FeatureLines extract_feature_lines(const TriangleMesh& mesh, const std::vector<FeatureEdge>& features, double spacing,
                                    double corner_angle_degrees = kDefaultCornerAngleDegrees);

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -270,6 +271,28 @@ Mat4 local_transform(const GltfDocument& doc, const json& node) {
   return m;
 }
 
+/// Index into model.materials for a primitive's material (glTF index, or -1 for none), adding the
+/// material on first use: its name (or "material N"), baseColorFactor as the diffuse colour.
+std::uint32_t model_material(const GltfDocument& doc, std::int64_t gltf_index, std::map<std::int64_t, std::uint32_t>& known,
+                             std::vector<Material>& materials) {
+  const auto found = known.find(gltf_index);
+  if (found != known.end()) return found->second;
+  Material material{"default"};
+  if (gltf_index >= 0) {
+    const json& source = doc.item("materials", json(gltf_index));
+    material.name = source.value("name", std::string());
+    if (material.name.empty()) material.name = "material " + std::to_string(gltf_index);
+    const json pbr = source.value("pbrMetallicRoughness", json::object());
+    const auto factor = pbr.value("baseColorFactor", std::vector<double>{1.0, 1.0, 1.0, 1.0});
+    if (factor.size() < 3) doc.fail("baseColorFactor of material " + std::to_string(gltf_index) + " has fewer than 3 numbers");
+    material.diffuse = Vec3(factor[0], factor[1], factor[2]).cwiseMax(0.0).cwiseMin(1.0);
+  }
+  const auto index = static_cast<std::uint32_t>(materials.size());
+  materials.push_back(std::move(material));
+  known.emplace(gltf_index, index);
+  return index;
+}
+
 /// Appends the triangles of one primitive, transformed by `world`, to `mesh`.
 void add_primitive(const GltfDocument& doc, const json& primitive, const Mat4& world, TriangleMesh& mesh) {
   const int mode = primitive.value("mode", 4);
@@ -325,7 +348,9 @@ void add_primitive(const GltfDocument& doc, const json& primitive, const Mat4& w
 
 /// Adds the meshes of the hierarchy below `root` (depth first, children in order). Every node
 /// may be reached once per scene (glTF nodes form strict trees), which also rules out cycles.
-void add_hierarchy(const GltfDocument& doc, const json& root, std::vector<bool>& visited, TriangleMesh& mesh) {
+/// Each primitive's triangles get its material (`known` maps glTF material indices to the model's).
+void add_hierarchy(const GltfDocument& doc, const json& root, std::vector<bool>& visited,
+                   std::map<std::int64_t, std::uint32_t>& known, Model& model) {
   std::vector<std::pair<json, Mat4>> stack{{root, Mat4::Identity()}};
   while (!stack.empty()) {
     const auto [node_index, parent] = stack.back();
@@ -337,7 +362,9 @@ void add_hierarchy(const GltfDocument& doc, const json& root, std::vector<bool>&
     const Mat4 world = parent * local_transform(doc, node);
     if (node.contains("mesh")) {
       for (const json& primitive : doc.item("meshes", node.at("mesh")).at("primitives")) {
-        add_primitive(doc, primitive, world, mesh);
+        add_primitive(doc, primitive, world, model.mesh);
+        const std::int64_t gltf_material = primitive.value("material", std::int64_t{-1});
+        model.mesh.materials.resize(model.mesh.triangles.size(), model_material(doc, gltf_material, known, model.materials));
       }
     }
     if (node.contains("children")) {
@@ -406,7 +433,13 @@ Model read_gltf(const std::filesystem::path& path, std::string_view bytes, bool 
     const std::string version = doc.root().at("asset").at("version").get<std::string>();
     if (version.rfind("2.", 0) != 0) doc.fail("unsupported glTF version " + version);
     std::vector<bool> visited(doc.array("nodes").size(), false);
-    for (const json& root : root_nodes(doc)) add_hierarchy(doc, root, visited, model.mesh);
+    std::map<std::int64_t, std::uint32_t> known;
+    for (const json& root : root_nodes(doc)) add_hierarchy(doc, root, visited, known, model);
+    // A file whose primitives name no material has none (not one "default" for everything).
+    if (model.materials.size() == 1 && model.materials[0].name == "default" && known.count(-1) == 1) {
+      model.materials.clear();
+      model.mesh.materials.clear();
+    }
   } catch (const nlohmann::json::exception& error) {
     throw InputError(name + ": malformed glTF (" + error.what() + ")");
   }

@@ -100,7 +100,7 @@ Model read_model(const std::filesystem::path& path) {
   const std::string bytes = load_file(path);
   Model model;
   if (extension == ".obj") {
-    model = detail::read_obj(name, bytes);
+    model = detail::read_obj(path, bytes);
   } else if (extension == ".off") {
     model = detail::read_off(name, bytes);
   } else if (extension == ".ply") {

@@ -12,8 +12,9 @@
 
 namespace dg::detail {
 
-/// Wavefront OBJ: v / f lines (n-gons, negative indices, v/vt/vn forms, '\' continuation).
-Model read_obj(const std::string& name, std::string_view text);
+/// Wavefront OBJ: v / f lines (n-gons, negative indices, v/vt/vn forms, '\' continuation), and
+/// usemtl materials with their Kd colours from the mtllib files next to `path`.
+Model read_obj(const std::filesystem::path& path, std::string_view text);
 /// OFF (also COFF/NOFF/CNOFF/STOFF headers): vertex and polygon lists.
 Model read_off(const std::string& name, std::string_view text);
 /// PLY ascii or binary (either endianness); no faces gives a point cloud.

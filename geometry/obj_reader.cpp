@@ -1,10 +1,14 @@
-// Wavefront OBJ reader: positions and polygon faces; everything else is skipped.
+// Wavefront OBJ reader: positions, polygon faces and their materials (usemtl, with colours from
+// the mtllib files); everything else is skipped.
 
 #include "geometry/model_reader.h"
 #include "geometry/text_reader.h"
 
 #include <cstdint>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <sstream>
 #include <vector>
 
 namespace dg::detail {
@@ -29,9 +33,44 @@ std::int64_t resolve_corner(const std::string& name, std::size_t line, std::stri
   return resolved;
 }
 
+/// The rest of a line without leading and trailing blanks (material and file names may hold spaces).
+std::string_view trimmed(std::string_view rest) {
+  skip_blanks(rest);
+  while (!rest.empty() && is_blank(rest.back())) rest.remove_suffix(1);
+  return rest;
+}
+
+/// Fills the diffuse colours of `materials` from the `newmtl` / `Kd r g b` entries of one MTL file.
+/// A library that cannot be read leaves the default colours: the geometry does not depend on it.
+void read_material_colours(const std::filesystem::path& library, std::vector<Material>& materials) {
+  std::ifstream in(library, std::ios::binary);
+  if (!in) return;
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  LineReader reader(text);
+  std::string_view line;
+  Material* current = nullptr;
+  while (reader.next(line)) {
+    std::string_view rest = line;
+    const std::string_view keyword = next_token(rest);
+    if (keyword == "newmtl") {
+      const std::string_view name = trimmed(rest);
+      current = nullptr;
+      for (Material& material : materials)
+        if (material.name == name) current = &material;
+    } else if (keyword == "Kd" && current) {
+      Vec3 kd;
+      if (read_number(rest, kd.x()) && read_number(rest, kd.y()) && read_number(rest, kd.z()) && kd.allFinite())
+        current->diffuse = kd.cwiseMax(0.0).cwiseMin(1.0);
+    }
+  }
+}
+
 }  // namespace
 
-Model read_obj(const std::string& name, std::string_view text) {
+Model read_obj(const std::filesystem::path& path, std::string_view text) {
+  const std::string name = path.string();
   Model model;
   TriangleMesh& mesh = model.mesh;
   mesh.positions.reserve(text.size() / 64);
@@ -39,6 +78,9 @@ Model read_obj(const std::string& name, std::string_view text) {
   std::vector<std::uint32_t> corners;
   std::int64_t max_index = -1;
   std::size_t max_index_line = 0;
+  std::map<std::string, std::uint32_t, std::less<>> material_index;  // name -> index in model.materials
+  std::uint32_t material = 0;  // current usemtl; faces before the first usemtl get "default"
+  std::vector<std::string> libraries;
 
   LineReader reader(text, true);
   std::string_view line;
@@ -66,8 +108,28 @@ Model read_obj(const std::string& name, std::string_view text) {
       }
       if (corners.size() < 3) throw_line_error(name, reader.line(), "face with fewer than 3 corners");
       add_fan(mesh, corners.data(), corners.size());
+      mesh.materials.resize(mesh.triangles.size(), material);
+    } else if (keyword == "usemtl") {
+      const std::string_view material_name = trimmed(rest);
+      auto found = material_index.find(material_name);
+      if (found == material_index.end()) {
+        found = material_index.emplace(std::string(material_name), static_cast<std::uint32_t>(model.materials.size())).first;
+        model.materials.push_back({found->first});
+      }
+      material = found->second;
+      if (model.materials.size() == 1 && !mesh.triangles.empty()) {  // faces came before any usemtl
+        model.materials.insert(model.materials.begin(), Material{"default"});
+        found->second = material = 1;
+      }
+    } else if (keyword == "mtllib") {
+      for (std::string_view file = next_token(rest); !file.empty(); file = next_token(rest)) libraries.emplace_back(file);
     }
-    // Comments, vt/vn/vp, groups, objects, smoothing, materials, lines and points are skipped.
+    // Comments, vt/vn/vp, groups, objects, smoothing, lines and points are skipped.
+  }
+  if (model.materials.empty()) {
+    mesh.materials.clear();
+  } else {
+    for (const std::string& library : libraries) read_material_colours(path.parent_path() / library, model.materials);
   }
   if (max_index >= static_cast<std::int64_t>(mesh.positions.size())) {
     throw_line_error(name, max_index_line,

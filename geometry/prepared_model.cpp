@@ -42,6 +42,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   VoxelSurfaceOptions voxel_options;
   voxel_options.r = options.r;
   voxel_options.eps = options.eps;
+  voxel_options.separate_materials = options.match_materials;
   try {
     if (model.is_point_cloud()) {
       prepared.cleaning = clean_point_cloud(model.cloud);
@@ -58,7 +59,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
             resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
       prepared.timings.push_back({"clean", clock.lap()});
       report_progress(progress, "feature lines", 0.0);
-      prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees);
+      prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees, options.match_materials);
       const double r = options.r > 0.0 ? options.r : default_radius(model.mesh.bounds());
       const double eps = options.eps > 0.0 ? options.eps : r / 4.0;
       prepared.feature_lines =

@@ -25,6 +25,9 @@ struct PrepareOptions {
   double eps = 0.0;  ///< voxel size in model units; 0 = r / 4
   double sharp_angle_degrees = kDefaultSharpAngleDegrees;    ///< dihedral angle of feature edges
   double corner_angle_degrees = kDefaultCornerAngleDegrees;  ///< turning angle that splits feature lines
+  /// Symmetries must also map materials onto the same materials, and material borders are feature
+  /// lines (for patterns drawn only in materials on flat walls). Off: geometry alone, as in paper 001.
+  bool match_materials = false;
 };
 
 struct PreparedModel {

@@ -254,7 +254,7 @@ struct WeightedPlane {
   double weight = 0.0;  // area of the triangle it came from; 0 = degenerate
 };
 
-// Merges planes equal within tolerance; keeps the representative of the largest triangle.
+// Merges planes of one material equal within tolerance; keeps the representative of the largest triangle.
 void merge_planes(std::span<const std::uint32_t> triangles, const std::vector<WeightedPlane>& triangle_planes,
                   double cos_tolerance, double offset_tolerance, std::vector<CellPlane>& out) {
   std::vector<double> weights;
@@ -263,7 +263,8 @@ void merge_planes(std::span<const std::uint32_t> triangles, const std::vector<We
     if (p.weight <= 0.0) continue;
     bool merged = false;
     for (std::size_t m = 0; m < out.size(); ++m) {
-      if (out[m].normal.dot(p.plane.normal) > cos_tolerance && std::abs(out[m].offset - p.plane.offset) < offset_tolerance) {
+      if (out[m].material == p.plane.material && out[m].normal.dot(p.plane.normal) > cos_tolerance &&
+          std::abs(out[m].offset - p.plane.offset) < offset_tolerance) {
         if (p.weight > weights[m]) {
           out[m] = p.plane;
           weights[m] = p.weight;
@@ -302,7 +303,8 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
     const double length = n.norm();
     if (length <= 0.0) return;
     const Vec3 unit = n / length;
-    triangle_planes[t] = {{unit, unit.dot(mesh.positions[mesh.triangles[t][0]])}, 0.5 * length};
+    const std::uint32_t material = options.separate_materials && mesh.has_materials() ? mesh.materials[t] : 0;
+    triangle_planes[t] = {{unit, unit.dot(mesh.positions[mesh.triangles[t][0]]), material}, 0.5 * length};
   });
   const double cos_tolerance = std::cos(options.plane_merge_angle_degrees * std::numbers::pi / 180.0);
   const double offset_tolerance = options.plane_merge_offset * eps;

@@ -23,9 +23,13 @@ namespace dg {
 using VoxelCoord = std::array<std::int32_t, 3>;
 
 /// Oriented plane n . x = offset (n unit, pointing to the front of the triangles it came from).
+/// `material` is the material index of the triangles on it (0 when the mesh has none or the
+/// surface was built without VoxelSurfaceOptions::separate_materials): planes of different
+/// materials stay apart, so symmetry must map each material onto itself.
 struct CellPlane {
   Vec3 normal = Vec3::UnitZ();
   double offset = 0.0;
+  std::uint32_t material = 0;
 };
 
 /// Infinite line through `point` with unit `direction`, from a feature or boundary edge.
@@ -45,6 +49,8 @@ struct VoxelSurfaceOptions {
   double plane_merge_angle_degrees = 1.0;
   /// ... and their offsets differ by less than this fraction of eps.
   double plane_merge_offset = 0.05;
+  /// Cell planes keep the material of their triangles (CellPlane::material) instead of 0.
+  bool separate_materials = false;
 };
 
 /// Counts for reports.

@@ -385,9 +385,10 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   std::vector<GridDirection> translations, screws;
   for (const SymmetryFamily& family : symmetries.families) {
     if (family.kind != "translation" && family.kind != "screw") continue;
-    // The generator is the family member with power 1.
+    // Every member, not only the generator (power 1): a generator can be a motion that maps only
+    // outlines onto outlines (half a window pitch on a painted wall), while its square repeats whole units.
+    // Parallel members compete below; the one with the most units wins.
     for (std::size_t m = 0; m < family.members.size(); ++m) {
-      if (family.powers[m] != 1) continue;
       const auto direction =
           grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
                          options.max_slab_asymmetry);

@@ -85,7 +85,7 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
     const Vec3 normal = t.apply_direction(plane.normal);
     const bool found = image.any([&](std::uint32_t other) {
       for (const CellPlane& candidate : surface_.planes(other)) {
-        if (std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
+        if (candidate.material == plane.material && std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
             std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
           return true;
       }

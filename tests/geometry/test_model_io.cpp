@@ -255,6 +255,39 @@ TEST_CASE("OBJ negative indices, corner forms, extra columns and continuation li
   CHECK(model.mesh.triangles == expected);
 }
 
+TEST_CASE("OBJ materials: usemtl per face, Kd colours from mtllib, faces before any usemtl", "[geometry][model_io]") {
+  const fs::path folder = test_folder("obj-materials");
+  write_bytes(folder / "walls.mtl",
+              "newmtl brick red\nKd 0.8 0.2 0.1\nnewmtl glass\nKa 1 1 1\nKd 0.1 0.2 0.9\nnewmtl unused\nKd 1 1 1\n");
+  const std::string geometry = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n";
+  write_bytes(folder / "walls.obj", "mtllib walls.mtl\n" + geometry +
+                                        "f 1 2 3\n"
+                                        "usemtl  brick red \nf 1 2 3 4\n"
+                                        "usemtl glass\nf 2 5 6\n"
+                                        "usemtl brick red\nf 2 6 3\n");
+  const Model model = dg::read_model(folder / "walls.obj");
+  REQUIRE(model.materials.size() == 3);
+  CHECK(model.materials[0].name == "default");
+  CHECK(model.materials[1].name == "brick red");
+  CHECK(model.materials[1].diffuse.isApprox(Vec3(0.8, 0.2, 0.1)));
+  CHECK(model.materials[2].name == "glass");
+  CHECK(model.materials[2].diffuse.isApprox(Vec3(0.1, 0.2, 0.9)));
+  CHECK(model.mesh.materials == std::vector<std::uint32_t>{0, 1, 1, 2, 1});
+
+  // Cleaning drops the degenerate triangle and its material with it.
+  write_bytes(folder / "flat.obj", geometry + "usemtl a\nf 1 2 3\nusemtl b\nf 1 2 5\nusemtl c\nf 2 5 6\n");
+  Model flat = dg::read_model(folder / "flat.obj");
+  CHECK(flat.materials[0].diffuse == dg::Material{}.diffuse);  // no mtllib: default colours
+  dg::clean_mesh(flat.mesh);
+  CHECK(flat.mesh.materials == std::vector<std::uint32_t>{0, 2});
+
+  // No usemtl at all: no materials, whatever mtllib says.
+  write_bytes(folder / "plain.obj", "mtllib missing.mtl\n" + geometry + "f 1 2 3\n");
+  const Model plain = dg::read_model(folder / "plain.obj");
+  CHECK(plain.materials.empty());
+  CHECK_FALSE(plain.mesh.has_materials());
+}
+
 TEST_CASE("OBJ errors name the file and the line", "[geometry][model_io]") {
   const fs::path folder = test_folder("obj-errors");
   write_bytes(folder / "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
@@ -400,6 +433,31 @@ TEST_CASE("glTF: two instances of one mesh under a translated node", "[geometry]
   require_input_error(folder / "missing.gltf", "cannot read buffer file");
   write_bytes(folder / "broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, ");
   require_input_error(folder / "broken.gltf", "invalid glTF JSON");
+}
+
+TEST_CASE("glTF materials: each primitive's triangles get its material and baseColorFactor", "[geometry][model_io]") {
+  const fs::path folder = test_folder("gltf-materials");
+  const std::string uri = "data:application/octet-stream;base64," + base64(triangle_buffer());
+  std::string text = two_instance_gltf(uri);
+  const std::string primitive = R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  const std::string with_materials = R"({"attributes": {"POSITION": 0}, "indices": 1, "material": 1},
+      {"attributes": {"POSITION": 0}, "indices": 1}, {"attributes": {"POSITION": 0}, "indices": 1, "material": 0})";
+  text.replace(text.find(primitive), primitive.size(), with_materials);
+  text.replace(text.find(R"("buffers")"), 0, R"("materials": [{"name": "stone"},
+      {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1.0, 1.0]}}], )");
+  write_bytes(folder / "materials.gltf", text);
+  const Model model = dg::read_model(folder / "materials.gltf");
+  REQUIRE(model.mesh.triangles.size() == 6);
+  REQUIRE(model.materials.size() == 3);
+  CHECK(model.materials[0].name == "material 1");
+  CHECK(model.materials[0].diffuse == Vec3(0.5, 0.25, 1.0));
+  CHECK(model.materials[1].name == "default");
+  CHECK(model.materials[2].name == "stone");
+  CHECK(model.materials[2].diffuse == Vec3(1.0, 1.0, 1.0));
+  CHECK(model.mesh.materials == std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2});
+
+  write_bytes(folder / "plain.gltf", two_instance_gltf(uri));
+  CHECK_FALSE(dg::read_model(folder / "plain.gltf").mesh.has_materials());
 }
 
 TEST_CASE("glTF: rotation, scale, mirrored transforms, strips and fans", "[geometry][model_io]") {

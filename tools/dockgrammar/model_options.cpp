@@ -21,6 +21,9 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
                      "Dihedral angle in degrees above which an edge is a feature edge")
       ->check(CLI::Range(0.0, 180.0))
       ->capture_default_str();
+  command.add_flag("--match-materials", options.prepare.match_materials,
+                   "Symmetries must also map each material onto itself; material borders count as feature lines "
+                   "(for patterns that exist only in materials, like windows painted on a flat wall)");
   command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");

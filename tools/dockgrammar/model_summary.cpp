@@ -7,6 +7,15 @@ namespace {
 
 std::string format_vector(const Vec3& v) { return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z()); }
 
+/// "none", or the count and the names (the first eight, then how many more).
+std::string materials_text(const std::vector<Material>& materials) {
+  if (materials.empty()) return "none";
+  std::string names;
+  for (std::size_t i = 0; i < materials.size() && i < 8; ++i) names += (i == 0 ? "" : ", ") + materials[i].name;
+  if (materials.size() > 8) names += fmt::format(", and {} more", materials.size() - 8);
+  return fmt::format("{} ({})", materials.size(), names);
+}
+
 }  // namespace
 
 std::string summary_text(const PreparedModel& prepared) {
@@ -26,6 +35,7 @@ std::string summary_text(const PreparedModel& prepared) {
     line("edges", fmt::format("{} boundary, {} non-manifold, {} inconsistently oriented; {} split at T-junctions for analysis",
                               c.boundary_edges, c.non_manifold_edges, c.inconsistent_edges, c.t_junctions_split));
     line("components", fmt::format("{}{}", c.components, c.closed_and_oriented ? " (closed, consistently oriented)" : ""));
+    line("materials", materials_text(prepared.model.materials));
   }
   line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
                              format_vector(c.bounds.size())));
@@ -45,8 +55,11 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
   const VoxelSurfaceStats stats = prepared.surface.stats();
   nlohmann::json timings = nlohmann::json::object();
   for (const StageTiming& t : prepared.timings) timings[t.stage] = t.seconds;
+  nlohmann::json material_names = nlohmann::json::array();
+  for (const Material& material : prepared.model.materials) material_names.push_back(material.name);
   return {{"model", prepared.model.source_path},
           {"cleaning", to_json(prepared.cleaning)},
+          {"materials", material_names},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},
           {"voxel_surface",
