@@ -13,8 +13,8 @@ ShapeGrammar asset_grammar(const std::string& name, const nlohmann::json& params
   return model_grammar(std::move(model), context_free);
 }
 
-ShapeGrammar model_grammar(Model model, bool context_free) {
-  const PreparedModel prepared = prepare_model(std::move(model));
+ShapeGrammar model_grammar(Model model, bool context_free, const PrepareOptions& options) {
+  const PreparedModel prepared = prepare_model(std::move(model), options);
   const SymmetryResult symmetries = detect_symmetries(prepared);
   ShapeGrammar grammar;
   grammar.r = prepared.surface.r();

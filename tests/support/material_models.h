@@ -33,4 +33,16 @@ std::uint32_t facade_material_at(const Vec3& p, const Vec3& normal);
 /// The generator's facade(columns, rows) with each triangle's material from facade_material_at.
 Model material_facade(int columns, int rows);
 
+/// Cell size of the painted wall along x and y, model units.
+inline constexpr double kPaintedPitchX = 3.0, kPaintedPitchY = 2.0;
+
+/// A flat wall in z = 0 facing +z of `columns` x `rows` cells of kPaintedPitchX x kPaintedPitchY,
+/// each a window [0.75, 2.25] x [0.5, 1.5] (material 1 "glass") framed by wall (material 0
+/// "wall"), drawn as 3 x 3 rectangles of two triangles per cell (welded by cleaning).
+Model painted_wall(int columns, int rows);
+
+/// The painted wall's material around point p: glass inside a cell's window, wall elsewhere.
+/// Periodic in x and y, so it holds for every size.
+std::uint32_t painted_wall_material_at(const Vec3& p);
+
 }  // namespace dg::test

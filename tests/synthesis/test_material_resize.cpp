@@ -68,3 +68,32 @@ TEST_CASE("materials: a facade resized to 5 x 7 has glass in every window and oa
   CHECK(area_by_material(resized)[dg::test::kGlass] == Approx(5 * 7 * 1.2 * 1.5).epsilon(1e-9));
   CHECK(area_by_material(resized)[dg::test::kOak] == Approx(5 * 1.4 * 2.6).epsilon(1e-9));
 }
+
+TEST_CASE("materials: windows painted on a flat wall come back whole in a resized wall", "[synthesis][grid][materials]") {
+  // The wall is one plane: only the materials keep window and wall apart when flat faces are
+  // joined and re-triangulated per cell, and only --match-materials finds the grid.
+  dg::PrepareOptions options;
+  options.match_materials = true;
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::painted_wall(6, 4), false, options);
+  REQUIRE(grammar.grids.size() == 1);
+  REQUIRE(grammar.grids[0].rule.directions.size() == 2);
+  std::vector<int> counts;  // two more cells each way (n cells are n - 1 units)
+  for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(d.count + 2);
+  const dg::TriangleMesh resized =
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFraction * grammar.eps);
+  REQUIRE(resized.has_materials());
+  double glass = 0.0;
+  for (std::size_t t = 0; t < resized.triangles.size(); ++t) {
+    const auto [a, b, c] = resized.corners(t);
+    INFO("triangle " << t << " at " << ((a + b + c) / 3.0).transpose());
+    REQUIRE(resized.materials[t] == dg::test::painted_wall_material_at((a + b + c) / 3.0));
+    if (resized.materials[t] != 1) continue;
+    glass += 0.5 * resized.area_vector(t).norm();
+    for (const Vec3& p : {a, b, c}) {  // inside its window, border included
+      const double x = p.x() - 3.0 * std::floor(p.x() / 3.0 + 1e-9), y = p.y() - 2.0 * std::floor(p.y() / 2.0 + 1e-9);
+      CHECK((x > 0.75 - 1e-9 && x < 2.25 + 1e-9 && y > 0.5 - 1e-9 && y < 1.5 + 1e-9));
+    }
+  }
+  CHECK(glass == Approx((counts[0] + 1) * (counts[1] + 1) * 1.5).epsilon(1e-9));
+  CHECK(resized.area() == Approx((counts[0] + 1) * (counts[1] + 1) * 6.0).epsilon(1e-9));
+}

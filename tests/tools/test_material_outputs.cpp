@@ -1,6 +1,7 @@
 // `resize` and `generate` write the grammar's materials: OBJ with mtllib/usemtl and its MTL,
 // checked face by face against the material fence's ground truth.
 
+#include "geometry/model_io.h"
 #include "geometry/png_reader.h"
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
@@ -99,4 +100,39 @@ TEST_CASE("materials: resize pictures show the materials' colours", "[tools][mat
   }
   CHECK(brownish_pixels(folder / "coloured.png") > 1000);
   CHECK(brownish_pixels(folder / "plain.png") == 0);
+}
+
+TEST_CASE("materials: analyze and resize an OBJ + MTL with painted windows, read the result back", "[tools][materials]") {
+  // The whole way: OBJ + MTL in, grammar, resized OBJ + MTL out, read again by read_model.
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-roundtrip-test");
+  const dg::Model wall = dg::test::painted_wall(6, 4);
+  dg::write_mesh_with_materials(folder / "wall.obj", wall.mesh, wall.materials);
+  const dg::test::CliRun analyze = dg::test::run_cli(
+      "analyze " + (folder / "wall.obj").string() + " --match-materials -q -o " + (folder / "grammar").string(), folder);
+  REQUIRE(analyze.status == 0);
+  const std::filesystem::path grammar_file = folder / "grammar" / "wall.grammar.json";
+  const dg::ShapeGrammar grammar = dg::read_grammar(grammar_file);
+  CHECK(grammar.materials == wall.materials);
+  REQUIRE(grammar.grids.size() == 1);
+  REQUIRE(grammar.grids[0].rule.directions.size() == 2);
+  std::vector<int> counts;
+  for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(d.count + 3);
+  const dg::test::CliRun resize = dg::test::run_cli(
+      "resize " + grammar_file.string() + " --grid grid1=" + std::to_string(counts[0]) + "x" + std::to_string(counts[1]) +
+          " -q -o " + (folder / "wide.obj").string(),
+      folder);
+  REQUIRE(resize.status == 0);
+
+  const dg::Model wide = dg::read_model(folder / "wide.obj");
+  REQUIRE(wide.mesh.has_materials());
+  REQUIRE(wide.materials.size() == 2);
+  double glass = 0.0;
+  for (std::size_t t = 0; t < wide.mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = wide.mesh.corners(t);
+    const dg::Material& material = wide.materials[wide.mesh.materials[t]];
+    INFO("triangle " << t << " at " << ((a + b + c) / 3.0).transpose());
+    REQUIRE(material == wall.materials[dg::test::painted_wall_material_at((a + b + c) / 3.0)]);
+    if (material.name == "glass") glass += 0.5 * wide.mesh.area_vector(t).norm();
+  }
+  CHECK(glass == Approx((counts[0] + 1) * (counts[1] + 1) * 1.5).epsilon(1e-9));
 }
