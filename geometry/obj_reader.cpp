@@ -79,7 +79,7 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
   std::int64_t max_index = -1;
   std::size_t max_index_line = 0;
   std::map<std::string, std::uint32_t, std::less<>> material_index;  // name -> index in model.materials
-  std::uint32_t material = 0;  // current usemtl; faces before the first usemtl get "default"
+  std::uint32_t material = 0;  // current usemtl; faces before the first one get "default" (index 0)
   std::vector<std::string> libraries;
 
   LineReader reader(text, true);
@@ -108,8 +108,13 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
       }
       if (corners.size() < 3) throw_line_error(name, reader.line(), "face with fewer than 3 corners");
       add_fan(mesh, corners.data(), corners.size());
-      mesh.materials.resize(mesh.triangles.size(), material);
+      if (!model.materials.empty()) mesh.materials.resize(mesh.triangles.size(), material);
     } else if (keyword == "usemtl") {
+      if (model.materials.empty() && !mesh.triangles.empty()) {  // faces came before any usemtl
+        model.materials.push_back({"default"});
+        material_index.emplace("default", 0);
+        mesh.materials.assign(mesh.triangles.size(), 0);
+      }
       const std::string_view material_name = trimmed(rest);
       auto found = material_index.find(material_name);
       if (found == material_index.end()) {
@@ -117,20 +122,12 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
         model.materials.push_back({found->first});
       }
       material = found->second;
-      if (model.materials.size() == 1 && !mesh.triangles.empty()) {  // faces came before any usemtl
-        model.materials.insert(model.materials.begin(), Material{"default"});
-        found->second = material = 1;
-      }
     } else if (keyword == "mtllib") {
       for (std::string_view file = next_token(rest); !file.empty(); file = next_token(rest)) libraries.emplace_back(file);
     }
     // Comments, vt/vn/vp, groups, objects, smoothing, lines and points are skipped.
   }
-  if (model.materials.empty()) {
-    mesh.materials.clear();
-  } else {
-    for (const std::string& library : libraries) read_material_colours(path.parent_path() / library, model.materials);
-  }
+  for (const std::string& library : libraries) read_material_colours(path.parent_path() / library, model.materials);
   if (max_index >= static_cast<std::int64_t>(mesh.positions.size())) {
     throw_line_error(name, max_index_line,
                      "face index " + std::to_string(max_index + 1) + " out of range (file has " +

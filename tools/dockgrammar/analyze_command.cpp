@@ -34,7 +34,7 @@ void add_analyze_command(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
       ->capture_default_str();
-  add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y; stored in the grammar file for generate");
+  add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y; stored in the grammar file for generate");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);

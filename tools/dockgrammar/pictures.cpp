@@ -32,7 +32,7 @@ MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& a
     options.camera.up = Vec3(0, 0, 1);
   } else if (axis.empty()) {
     const Vec3 size = mesh.bounds().size();
-    if (size.y() < size.x() && size.y() < size.z()) options.camera.up = Vec3(0, 0, 1);
+    if (size.y() < kWallThinness * std::min(size.x(), size.z())) options.camera.up = Vec3(0, 0, 1);
   } else {
     throw InputError("up axis '" + axis + "': expected x, y or z");
   }

@@ -22,9 +22,15 @@ void add_up_option(CLI::App& command, std::string& axis, const std::string& fall
 /// (.gltf/.glb: glTF 2.0 defines +Y as up); else empty (guess from the shape, see picture_options).
 std::string model_up_axis(const std::string& model_path, const std::string& given);
 
+/// A model is guessed to be a z-up wall when its y extent is below this fraction of its smaller
+/// x or z extent (walls and fences standing in the x-z plane: 0.03-0.26 for the bundled ones).
+/// Thicker models are y-up, the OBJ convention: low y-up furniture and buildings (0.5-0.8) were
+/// drawn on their side by a plain "thinnest along y" rule.
+inline constexpr double kWallThinness = 0.35;
+
 /// Render options with the model's up axis: `axis` "x", "y" or "z" as given to --up, or empty
-/// to guess from the model: z when it is thinnest along y (facades, fences lying in the x-z
-/// plane), y otherwise (the common OBJ/glTF convention).
+/// to guess from the model: z when it is a thin wall in the x-z plane (see kWallThinness), y
+/// otherwise (the common OBJ/glTF convention).
 MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis);
 
 /// A distinct, readable colour for class i (cycled).

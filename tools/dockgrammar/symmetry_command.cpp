@@ -24,7 +24,7 @@ void add_symmetry_command(CLI::App& app) {
   add_model_options(*command, options->model);
   command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(positive_number());
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
-  add_up_option(*command, options->up, "y for glTF files; else z when the model is thinnest along y, else y");
+  add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
