@@ -7,6 +7,7 @@ namespace dg {
 TriangleMesh cut_into_cells(const TriangleMesh& mesh, const VoxelSurface& surface, std::vector<std::uint32_t>& piece_cells) {
   TriangleMesh pieces;
   piece_cells.clear();
+  const bool has_materials = mesh.has_materials();
   const double eps = surface.eps();
   for (std::uint32_t cell = 0; cell < surface.cell_count(); ++cell) {
     const VoxelCoord& v = surface.coord(cell);
@@ -29,6 +30,7 @@ TriangleMesh cut_into_cells(const TriangleMesh& mesh, const VoxelSurface& surfac
       for (int n = 1; n + 1 < piece.size; ++n) {
         pieces.triangles.push_back({first, first + static_cast<std::uint32_t>(n), first + static_cast<std::uint32_t>(n + 1)});
         piece_cells.push_back(cell);
+        if (has_materials) pieces.materials.push_back(mesh.materials[t]);
       }
     }
   }

@@ -153,6 +153,11 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   std::vector<char> kept = pinned, interior_edge(uses.size(), 0);
   std::vector<std::uint32_t> parent(triangle_count);
   std::iota(parent.begin(), parent.end(), 0u);
+  // Triangles of different materials never share a region: their border is a label border.
+  const bool has_materials = mesh.has_materials();
+  auto same_label = [&](std::uint32_t a, std::uint32_t b) {
+    return label[a] == label[b] && (!has_materials || mesh.materials[a] == mesh.materials[b]);
+  };
   // Vertices on open edges that may go: two open edges in a straight line, nothing else but
   // joined edges around (the vertex's other end of each open edge is recorded).
   std::vector<std::array<std::uint32_t, 2>> open_ends(straighten_open_borders ? mesh.positions.size() : 0);
@@ -171,17 +176,17 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
         if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
         else kept[v] = 1;
-    } else if (straighten_label_borders && j - i == 2 && (label[a] != label[b] || origin[a] != origin[b])) {
+    } else if (straighten_label_borders && j - i == 2 && (!same_label(a, b) || origin[a] != origin[b])) {
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}}) {
         if (border_count[v] < 2) border_ends[v][border_count[v]] = w;
         if (border_count[v] < 3) ++border_count[v];
       }
-    } else if (j - i != 2 || label[a] != label[b]) {
+    } else if (j - i != 2 || !same_label(a, b)) {
       kept[lo] = kept[hi] = 1;
     } else if (straighten_open_borders && origin[a] != origin[b]) {
       between_origins[lo] = between_origins[hi] = 1;
     }
-    if (j - i == 2 && label[a] == label[b] && origin[a] == origin[b]) {
+    if (j - i == 2 && same_label(a, b) && origin[a] == origin[b]) {
       interior_edge[uses[i].second] = interior_edge[uses[i + 1].second] = 1;
       parent[find_root(parent, a)] = find_root(parent, b);
     }
@@ -213,6 +218,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     }
     merged.mesh.triangles.insert(merged.mesh.triangles.end(), triangles.begin(), triangles.end());
     merged.representative.insert(merged.representative.end(), triangles.size(), region.front());
+    if (has_materials) merged.mesh.materials.insert(merged.mesh.materials.end(), triangles.size(), mesh.materials[region.front()]);
   }
   return merged;
 }

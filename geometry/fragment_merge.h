@@ -13,7 +13,7 @@
 namespace dg {
 
 /// The result of merge_fragments: the new triangles and, per new triangle, one input triangle
-/// of the region it lies in (its origin and label are the new triangle's).
+/// of the region it lies in (its origin, label and material are the new triangle's).
 struct MergedFragments {
   TriangleMesh mesh;  ///< same positions as the input (unused ones stay)
   std::vector<std::uint32_t> representative;
@@ -32,8 +32,9 @@ struct FragmentMergeOptions {
   bool straighten_label_borders = false;
 };
 
-/// Re-triangulates the regions of `mesh` (fragments with equal `origin` and equal `label`,
-/// one of each per triangle, joined across edges used by exactly two triangles). Vertices
+/// Re-triangulates the regions of `mesh` (fragments with equal `origin`, equal `label` and,
+/// when `mesh` has materials, equal material, one of each per triangle, joined across edges
+/// used by exactly two triangles); a material border counts as a label border. Vertices
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
 /// kept; others only where an edge between different labels, or an edge not used by exactly
 /// two triangles, ends; `options` lets some of those go too.

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace dg::detail {
 
@@ -26,9 +28,33 @@ void append_chunk(std::string& file, std::uint32_t type, std::string data, char 
   file += data;
 }
 
+// The triangles of each primitive: all in order, or with `materials` one list per material
+// used (ascending material), paired with the material (-1: none).
+std::vector<std::pair<int, std::vector<std::size_t>>> primitive_triangles(const TriangleMesh& mesh,
+                                                                          const std::vector<Material>* materials) {
+  if (!materials) {
+    std::vector<std::size_t> all(mesh.triangles.size());
+    for (std::size_t t = 0; t < all.size(); ++t) all[t] = t;
+    return {{-1, std::move(all)}};
+  }
+  std::vector<std::vector<std::size_t>> by_material(materials->size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) by_material[mesh.materials[t]].push_back(t);
+  std::vector<std::pair<int, std::vector<std::size_t>>> groups;
+  for (std::size_t m = 0; m < by_material.size(); ++m)
+    if (!by_material[m].empty()) groups.emplace_back(static_cast<int>(m), std::move(by_material[m]));
+  return groups;
+}
+
+json material_json(const Material& material) {
+  const Vec3& c = material.diffuse;
+  return {{"name", material.name},
+          {"pbrMetallicRoughness", {{"baseColorFactor", {c.x(), c.y(), c.z(), 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}};
+}
+
 }  // namespace
 
-void write_glb(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rgb>* colors) {
+void write_glb(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rgb>* colors,
+               const std::vector<Material>* materials) {
   json document = {{"asset", {{"version", "2.0"}, {"generator", "dockgrammar"}}}, {"scene", 0}};
   std::string binary;
   if (mesh.positions.empty() || mesh.triangles.empty()) {
@@ -48,18 +74,22 @@ void write_glb(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rg
       }
     }
     const std::size_t positions_bytes = binary.size();
-    for (const Triangle& t : mesh.triangles) {
-      for (std::uint32_t index : t) append_le(binary, index);
+    json accessors = json::array(
+        {{{"bufferView", 0}, {"componentType", 5126}, {"count", n}, {"type", "VEC3"}, {"min", low}, {"max", high}}});
+    const auto groups = primitive_triangles(mesh, materials);
+    for (const auto& [material, triangles] : groups) {
+      json indices = {{"bufferView", 1}, {"componentType", 5125}, {"count", 3 * triangles.size()}, {"type", "SCALAR"}};
+      if (binary.size() > positions_bytes) indices["byteOffset"] = binary.size() - positions_bytes;
+      accessors.push_back(std::move(indices));
+      for (std::size_t t : triangles) {
+        for (std::uint32_t index : mesh.triangles[t]) append_le(binary, index);
+      }
     }
     const std::size_t indices_bytes = binary.size() - positions_bytes;
     json attributes = {{"POSITION", 0}};
     json views = json::array({
         {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positions_bytes}, {"target", array_buffer}},
         {{"buffer", 0}, {"byteOffset", positions_bytes}, {"byteLength", indices_bytes}, {"target", element_array_buffer}},
-    });
-    json accessors = json::array({
-        {{"bufferView", 0}, {"componentType", 5126}, {"count", n}, {"type", "VEC3"}, {"min", low}, {"max", high}},
-        {{"bufferView", 1}, {"componentType", 5125}, {"count", 3 * mesh.triangles.size()}, {"type", "SCALAR"}},
     });
     if (colors) {
       // Each vertex attribute element must start on a 4-byte boundary, hence a stride of 4.
@@ -72,13 +102,24 @@ void write_glb(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rg
                        {"byteLength", binary.size() - colors_offset},
                        {"byteStride", 4},
                        {"target", array_buffer}});
+      attributes["COLOR_0"] = accessors.size();
       accessors.push_back(
           {{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", n}, {"type", "VEC3"}});
-      attributes["COLOR_0"] = 2;
+    }
+    json primitives = json::array();
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      json primitive = {{"attributes", attributes}, {"indices", g + 1}, {"mode", 4}};
+      if (groups[g].first >= 0) primitive["material"] = groups[g].first;
+      primitives.push_back(std::move(primitive));
+    }
+    if (materials) {
+      json list = json::array();
+      for (const Material& m : *materials) list.push_back(material_json(m));
+      document["materials"] = std::move(list);
     }
     document["scenes"] = json::array({{{"nodes", json::array({0})}}});
     document["nodes"] = json::array({{{"mesh", 0}}});
-    document["meshes"] = json::array({{{"primitives", json::array({{{"attributes", attributes}, {"indices", 1}, {"mode", 4}}})}}});
+    document["meshes"] = json::array({{{"primitives", std::move(primitives)}}});
     document["buffers"] = json::array({{{"byteLength", binary.size()}}});
     document["bufferViews"] = std::move(views);
     document["accessors"] = std::move(accessors);

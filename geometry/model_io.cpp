@@ -117,21 +117,43 @@ Model read_model(const std::filesystem::path& path) {
   return model;
 }
 
-void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const std::vector<Rgb>* vertex_colors) {
-  const std::string name = path.string();
+namespace {
+
+/// The writable extension of `path` (lower case); InputError for a format that cannot be written.
+std::string output_extension(const std::filesystem::path& path) {
   const std::string extension = lower_extension(path);
   if (extension != ".obj" && extension != ".ply" && extension != ".glb") {
-    throw InputError(name + ": cannot write format '" + extension + "' (supported: .obj .ply .glb)");
+    throw InputError(path.string() + ": cannot write format '" + extension + "' (supported: .obj .ply .glb)");
   }
-  if (vertex_colors && vertex_colors->size() != mesh.positions.size()) {
-    throw std::invalid_argument("write_mesh: " + std::to_string(vertex_colors->size()) + " colours for " +
-                                std::to_string(mesh.positions.size()) + " vertices");
-  }
+  return extension;
+}
+
+/// std::invalid_argument unless every triangle index names a vertex of `mesh`.
+void check_triangle_indices(const TriangleMesh& mesh) {
   for (const Triangle& t : mesh.triangles) {
     for (std::uint32_t index : t) {
       if (index >= mesh.positions.size()) throw std::invalid_argument("write_mesh: triangle index out of range");
     }
   }
+}
+
+/// The diffuse colour of `material` as 0..255 channels.
+Rgb diffuse_rgb(const Material& material) {
+  Rgb rgb{};
+  for (int c = 0; c < 3; ++c)
+    rgb[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(material.diffuse[c], 0.0, 1.0)));
+  return rgb;
+}
+
+}  // namespace
+
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const std::vector<Rgb>* vertex_colors) {
+  const std::string extension = output_extension(path);
+  if (vertex_colors && vertex_colors->size() != mesh.positions.size()) {
+    throw std::invalid_argument("write_mesh: " + std::to_string(vertex_colors->size()) + " colours for " +
+                                std::to_string(mesh.positions.size()) + " vertices");
+  }
+  check_triangle_indices(mesh);
   write_file_atomically(path, [&](std::ostream& out) {
     if (extension == ".obj") {
       detail::write_obj(out, mesh);
@@ -141,6 +163,34 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
       detail::write_glb(out, mesh, vertex_colors);
     }
   });
+}
+
+void write_mesh_with_materials(const std::filesystem::path& path, const TriangleMesh& mesh,
+                               const std::vector<Material>& materials) {
+  if (materials.empty() || !mesh.has_materials()) {
+    write_mesh(path, mesh);
+    return;
+  }
+  const std::string extension = output_extension(path);
+  check_triangle_indices(mesh);
+  for (std::uint32_t m : mesh.materials) {
+    if (m >= materials.size()) throw std::invalid_argument("write_mesh_with_materials: material index out of range");
+  }
+  if (extension == ".obj") {
+    std::filesystem::path library = path;
+    library.replace_extension(".mtl");
+    const detail::ObjMaterials names{library.filename().string(), detail::obj_material_names(materials)};
+    // The library first: the OBJ never names a file that is not there.
+    write_file_atomically(library, [&](std::ostream& out) { detail::write_mtl(out, materials, names.names); });
+    write_file_atomically(path, [&](std::ostream& out) { detail::write_obj(out, mesh, &names); });
+  } else if (extension == ".ply") {
+    std::vector<Rgb> face_colors;
+    face_colors.reserve(mesh.triangles.size());
+    for (std::uint32_t m : mesh.materials) face_colors.push_back(diffuse_rgb(materials[m]));
+    write_file_atomically(path, [&](std::ostream& out) { detail::write_ply(out, mesh, nullptr, &face_colors); });
+  } else {
+    write_file_atomically(path, [&](std::ostream& out) { detail::write_glb(out, mesh, nullptr, &materials); });
+  }
 }
 
 }  // namespace dg

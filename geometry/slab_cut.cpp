@@ -11,11 +11,13 @@ namespace dg {
 namespace {
 
 // Splits every triangle along one plane n . x = offset; `origin` (one entry per triangle of
-// `mesh`) is replaced by one entry per triangle of the result, each piece keeping its triangle's.
+// `mesh`) is replaced by one entry per triangle of the result, each piece keeping its triangle's
+// (and its material).
 TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, double offset, double tolerance,
                              std::vector<std::uint32_t>& origin) {
   TriangleMesh out;
   std::vector<std::uint32_t> out_origin;
+  const bool has_materials = mesh.has_materials();
   out.positions = mesh.positions;
   std::vector<double> side(out.positions.size());
   for (std::size_t v = 0; v < out.positions.size(); ++v) {
@@ -55,6 +57,7 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
     if (alone < 0) {
       out.triangles.push_back(tri);
       out_origin.push_back(origin[t]);
+      if (has_materials) out.materials.push_back(mesh.materials[t]);
       continue;
     }
     const std::uint32_t a = tri[alone], b = tri[(alone + 1) % 3], c = tri[(alone + 2) % 3];
@@ -81,6 +84,7 @@ TriangleMesh cut_along_plane(const TriangleMesh& mesh, const Vec3& normal, doubl
       }
     }
     out_origin.resize(out.triangles.size(), origin[t]);
+    if (has_materials) out.materials.resize(out.triangles.size(), mesh.materials[t]);
   }
   origin = std::move(out_origin);
   return out;

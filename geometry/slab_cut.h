@@ -12,7 +12,7 @@ namespace dg {
 /// Splits the triangles of `mesh` along the planes direction . x = cuts[i] (direction unit,
 /// model units). An edge crossing a plane gets one new vertex shared by both of its triangles,
 /// so a closed mesh stays closed; vertices within `tolerance` of a plane are moved onto it.
-/// The result keeps the input's vertices first, in their order. With `origin` (one entry per
+/// Every piece keeps its triangle's material. The result keeps the input's vertices first, in their order. With `origin` (one entry per
 /// input triangle, e.g. 0 .. n-1), it is replaced by one entry per output triangle: the entry of
 /// the input triangle it was cut from.
 TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, const std::vector<double>& cuts,
@@ -23,7 +23,7 @@ TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, c
 std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& direction, const std::vector<double>& cuts);
 
 /// Merges vertices closer than `tolerance` (model units) into the first of them (in index
-/// order) and drops triangles that become degenerate. With `only` (one flag per vertex), only
+/// order) and drops triangles that become degenerate (the others keep their materials). With `only` (one flag per vertex), only
 /// flagged vertices are merged, with each other; the rest are kept as they are. Returns the new
 /// index of every old vertex. Deterministic.
 std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, const std::vector<char>* only = nullptr);

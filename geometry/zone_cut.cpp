@@ -311,6 +311,10 @@ ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const 
   for (const Piece& p : pieces) add_conforming(p.corners, cutter, positions, p.origin, out);
   out.mesh.positions = std::move(positions);
   merge_coincident(out, static_cast<std::uint32_t>(mesh.positions.size()), touched, tolerance);
+  if (mesh.has_materials()) {
+    out.mesh.materials.reserve(out.origin.size());
+    for (std::uint32_t t : out.origin) out.mesh.materials.push_back(mesh.materials[t]);
+  }
   return out;
 }
 

@@ -19,7 +19,8 @@ struct PlaneFamily {
   std::vector<double> offsets;
 };
 
-/// The result of cut_zone: the new mesh and, per new triangle, the input triangle it lies in.
+/// The result of cut_zone: the new mesh (each triangle with the material of the input triangle
+/// it lies in, when the input has materials) and, per new triangle, that input triangle.
 struct ZoneCut {
   TriangleMesh mesh;
   std::vector<std::uint32_t> origin;

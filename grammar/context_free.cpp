@@ -161,12 +161,20 @@ bool has_degenerate_triangle(const TriangleMesh& mesh) {
   return std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) { return is_degenerate(mesh, t); });
 }
 
+// The material indices of `mesh`'s triangles, ascending.
+std::vector<std::uint32_t> sorted_materials(const TriangleMesh& mesh) {
+  std::vector<std::uint32_t> materials = mesh.materials;
+  std::sort(materials.begin(), materials.end());
+  return materials;
+}
+
 // Equal up to `tolerance` (model units): same left side, same terminal triangles (compared by
-// count, area, bounding box and vertices) and the same child slots with the same exemplar
-// productions.
+// count, area, bounding box, vertices and how many triangles carry each material) and the same
+// child slots with the same exemplar productions.
 bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance) {
   if (a.lhs != b.lhs || a.terminal.triangles.size() != b.terminal.triangles.size() || a.children.size() != b.children.size())
     return false;
+  if (sorted_materials(a.terminal) != sorted_materials(b.terminal)) return false;
   if (std::abs(a.terminal.area() - b.terminal.area()) > tolerance * tolerance) return false;
   if (!a.terminal.triangles.empty()) {
     const BoundingBox ba = a.terminal.bounds(), bb = b.terminal.bounds();
@@ -490,7 +498,7 @@ class Builder {
   }
 
   // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`, in
-  // model coordinates.
+  // model coordinates, each triangle with its exemplar triangle's material.
   TriangleMesh remainder(std::size_t node, const std::vector<std::size_t>& children) {
     std::vector<std::uint32_t> own;
     if (node == kNone) {
@@ -520,6 +528,7 @@ class Builder {
         tri[k] = at->second;
       }
       part.triangles.push_back(tri);
+      if (cut_.has_materials()) part.materials.push_back(cut_.materials[t]);
       origin.push_back(origin_[t]);
     }
     for (std::size_t c : children)

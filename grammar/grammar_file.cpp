@@ -3,6 +3,7 @@
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "grammar/material_json.h"
 
 #include <fmt/format.h>
 
@@ -92,9 +93,15 @@ SeamSurface read_seam(const nlohmann::json& nonterminal, int version, const std:
   return seam;
 }
 
+// Adds `key`: the material runs of `mesh` when the grammar has materials and `mesh` carries them.
+void add_material_runs(nlohmann::json& object, const char* key, const TriangleMesh& mesh, const ShapeGrammar& grammar) {
+  if (!grammar.materials.empty() && mesh.has_materials()) object[key] = material_runs_json(mesh);
+}
+
 // One production: its terminal goes to a sidecar file (none when it has no triangles).
-nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProduction& p, const std::filesystem::path& folder,
+nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProduction& p, const std::filesystem::path& folder,
                                const std::string& file) {
+  const ContextFreeGrammar& g = grammar.context_free;
   nlohmann::json children = nlohmann::json::array();
   for (const ChildSlot& c : p.children)
     children.push_back({{"nonterminal", g.nonterminals[c.nonterminal].name},
@@ -111,6 +118,7 @@ nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProductio
                         {"children", children},
                         {"source_site", p.source_site}};
   if (p.source_frame) out["source_frame"] = matrix_json(p.source_frame->matrix());
+  add_material_runs(out, "material_runs", p.terminal, grammar);
   return out;
 }
 
@@ -155,10 +163,12 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
     for (const GridPiece& piece : grid.pieces) {
       const std::string file = grid.rule.name + "_" + piece_name(piece.classes) + ".ply";
       write_mesh(folder / file, piece.mesh);
-      pieces.push_back({{"name", piece_name(piece.classes)},
-                        {"classes", piece.classes},
-                        {"file", folder_name + "/" + file},
-                        {"triangles", piece.mesh.triangles.size()}});
+      nlohmann::json entry = {{"name", piece_name(piece.classes)},
+                              {"classes", piece.classes},
+                              {"file", folder_name + "/" + file},
+                              {"triangles", piece.mesh.triangles.size()}};
+      add_material_runs(entry, "material_runs", piece.mesh, grammar);
+      pieces.push_back(std::move(entry));
     }
     grids.push_back({{"name", grid.rule.name},
                      {"dims", grid.rule.directions.size()},
@@ -173,9 +183,9 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
   for (const ShapeNonterminal& n : cf.nonterminals)
     nonterminals.push_back({{"name", n.name}, {"seam", seam_json(n.seam)}, {"sites", n.sites}});
   if (!cf.empty()) {
-    axiom = production_json(cf, cf.axiom, folder, "axiom.ply");
+    axiom = production_json(grammar, cf.axiom, folder, "axiom.ply");
     for (std::size_t i = 0; i < cf.productions.size(); ++i)
-      productions.push_back(production_json(cf, cf.productions[i], folder, fmt::format("production_{}.ply", i + 1)));
+      productions.push_back(production_json(grammar, cf.productions[i], folder, fmt::format("production_{}.ply", i + 1)));
   }
   nlohmann::json document = {{"format", "dockgrammar-grammar"},
                              {"version", kGrammarFileVersion},
@@ -189,6 +199,8 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                              {"axiom", axiom},
                              {"productions", productions}};
   if (!grammar.up_axis.empty()) document["up"] = grammar.up_axis;
+  if (!grammar.materials.empty()) document["materials"] = materials_json(grammar.materials);
+  add_material_runs(document, "exemplar_material_runs", grammar.exemplar, grammar);
   write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << '\n'; }, false);
 }
 
@@ -206,7 +218,7 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
   if (!p.contains("lhs")) throw InputError(where + ": a production has no \"lhs\"");
   if (!p.at("lhs").is_null()) production.lhs = nonterminal(field<std::string>(p, "lhs", where));
   if (!p.contains("terminal")) throw InputError(where + ": a production has no \"terminal\"");
-  if (!p.at("terminal").is_null()) production.terminal = load(field<std::string>(p, "terminal", where));
+  if (!p.at("terminal").is_null()) production.terminal = load(field<std::string>(p, "terminal", where), p);
   production.source_site = field<std::size_t>(p, "source_site", where);
   if (p.contains("source_frame")) production.source_frame = matrix_field(p, "source_frame", where);
   for (const nlohmann::json& c : field<nlohmann::json>(p, "children", where)) {
@@ -269,13 +281,19 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     if (grammar.up_axis != "x" && grammar.up_axis != "y" && grammar.up_axis != "z")
       throw InputError(where + ": \"up\" must be \"x\", \"y\" or \"z\"");
   }
-  auto load = [&](const std::string& relative) {
+  if (document.contains("materials")) grammar.materials = read_materials_json(document.at("materials"), where);
+  // A sidecar mesh with the material runs stored under `runs_key` in `owner` (none when absent).
+  auto load = [&](const std::string& relative, const nlohmann::json& owner, const char* runs_key = "material_runs") {
     const std::filesystem::path file = path.parent_path() / relative;
     if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar mesh " + file.string() + " is missing");
-    Model model = read_model(file);
-    return std::move(model.mesh);
+    TriangleMesh mesh = read_model(file).mesh;
+    mesh.materials.clear();
+    if (owner.contains(runs_key))
+      mesh.materials = read_material_runs(owner.at(runs_key), mesh.triangles.size(), grammar.materials.size(),
+                                          where + ": " + relative);
+    return mesh;
   };
-  grammar.exemplar = load(field<std::string>(document, "exemplar", where));
+  grammar.exemplar = load(field<std::string>(document, "exemplar", where), document, "exemplar_material_runs");
   for (const nlohmann::json& grid : field<nlohmann::json>(document, "grids", where)) {
     GridWithPieces entry;
     entry.rule.name = field<std::string>(grid, "name", where);
@@ -318,7 +336,7 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
       piece.classes = field<std::vector<int>>(p, "classes", where);
       if (piece.classes.size() != entry.rule.directions.size())
         throw InputError(where + ": piece " + field<std::string>(p, "name", where) + " has the wrong number of classes");
-      piece.mesh = load(field<std::string>(p, "file", where));
+      piece.mesh = load(field<std::string>(p, "file", where), p);
       entry.pieces.push_back(std::move(piece));
     }
     grammar.grids.push_back(std::move(entry));

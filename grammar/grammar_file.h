@@ -22,6 +22,7 @@ struct GridWithPieces {
   std::vector<GridPiece> pieces;
 };
 
+/// Everything `analyze` writes and `resize`/`generate` read: the rules with their pieces.
 struct ShapeGrammar {
   std::string source_name;    ///< file name of the exemplar
   std::string source_hash;    ///< FNV-1a 64-bit hash of the exemplar file's bytes, hex
@@ -33,6 +34,9 @@ struct ShapeGrammar {
   ContextFreeGrammar context_free;  ///< empty when no docking site gave a production
   /// The exemplar's cleaned mesh (used when no grid is resized and for reference).
   TriangleMesh exemplar;
+  /// The exemplar's materials, indexed by the materials of the exemplar and of every piece and
+  /// terminal; empty when the exemplar names none.
+  std::vector<Material> materials;
 };
 
 /// Hex FNV-1a 64-bit hash of a file's bytes (throws InputError when unreadable).

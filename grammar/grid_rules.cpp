@@ -284,7 +284,7 @@ bool independent_of(const Vec3& t, const std::vector<GridDirection>& chosen) {
 constexpr std::uint32_t kNoTwin = std::numeric_limits<std::uint32_t>::max();
 
 // Per triangle of `mesh`: the earlier triangle it doubles back to back (the same corners in the
-// opposite order), or kNoTwin; a triangle is the twin of at most one other.
+// opposite order and the same material), or kNoTwin; a triangle is the twin of at most one other.
 std::vector<std::uint32_t> back_to_back_twins(const TriangleMesh& mesh) {
   std::map<std::array<std::uint32_t, 3>, std::vector<std::uint32_t>> unpaired;  // sorted corners -> triangles
   std::vector<std::uint32_t> twin(mesh.triangles.size(), kNoTwin);
@@ -295,6 +295,7 @@ std::vector<std::uint32_t> back_to_back_twins(const TriangleMesh& mesh) {
     std::vector<std::uint32_t>& candidates = unpaired[key];
     const Triangle reversed{tri[0], tri[2], tri[1]};
     const auto match = std::find_if(candidates.begin(), candidates.end(), [&](std::uint32_t u) {
+      if (mesh.has_materials() && mesh.materials[u] != mesh.materials[t]) return false;
       const Triangle& other = mesh.triangles[u];
       for (int k = 0; k < 3; ++k)
         if (other[k] == reversed[0] && other[(k + 1) % 3] == reversed[1]) return true;
@@ -316,11 +317,13 @@ std::vector<char> drop_twins(const TriangleMesh& mesh, TriangleMesh& sheet) {
   const std::vector<std::uint32_t> twin = back_to_back_twins(mesh);
   sheet.positions = mesh.positions;
   sheet.triangles.clear();
+  sheet.materials.clear();
   std::vector<std::uint32_t> sheet_index(mesh.triangles.size(), kNoTwin);
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
     if (twin[t] == kNoTwin) {
       sheet_index[t] = static_cast<std::uint32_t>(sheet.triangles.size());
       sheet.triangles.push_back(mesh.triangles[t]);
+      if (mesh.has_materials()) sheet.materials.push_back(mesh.materials[t]);
     }
   std::vector<char> doubled(sheet.triangles.size(), 0);
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
@@ -329,7 +332,7 @@ std::vector<char> drop_twins(const TriangleMesh& mesh, TriangleMesh& sheet) {
 }
 
 // Groups of triangles that lie in one plane (within `tolerance`, model units), share `kind`
-// and are joined by edges that exactly two triangles use, as one id per triangle: cutting may
+// and their material and are joined by edges that exactly two triangles use, as one id per triangle: cutting may
 // then re-triangulate a flat face as a whole instead of triangle by triangle.
 std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> users;
@@ -341,6 +344,9 @@ std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, const std::
     while (group[x] != x) x = group[x] = group[group[x]];
     return x;
   };
+  auto same_material = [&](std::uint32_t a, std::uint32_t b) {
+    return !mesh.has_materials() || mesh.materials[a] == mesh.materials[b];
+  };
   auto flat = [&](std::uint32_t a, std::uint32_t b) {  // b's corners on a's plane, same side up
     const Vec3 n = mesh.area_vector(a).normalized(), m = mesh.area_vector(b).normalized();
     if (!(n.dot(m) > 0.0)) return false;
@@ -349,8 +355,8 @@ std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, const std::
                        [&](std::uint32_t v) { return std::abs(n.dot(mesh.positions[v] - p)) <= tolerance; });
   };
   for (const auto& [edge, triangles] : users)
-    if (triangles.size() == 2 && kind[triangles[0]] == kind[triangles[1]] && flat(triangles[0], triangles[1]) &&
-        flat(triangles[1], triangles[0]))
+    if (triangles.size() == 2 && kind[triangles[0]] == kind[triangles[1]] && same_material(triangles[0], triangles[1]) &&
+        flat(triangles[0], triangles[1]) && flat(triangles[1], triangles[0]))
       group[root(triangles[0])] = root(triangles[1]);
   for (std::uint32_t t = 0; t < group.size(); ++t) group[t] = root(t);
   return group;
@@ -469,9 +475,11 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
     const std::uint32_t r = merged.representative[t];
     result.mesh.triangles.push_back(tri);
     result.slabs.push_back(slabs[r]);
+    if (cut.has_materials()) result.mesh.materials.push_back(cut.materials[r]);
     if (!doubled[origin[r]]) continue;
     result.mesh.triangles.push_back({tri[0], tri[2], tri[1]});
     result.slabs.push_back(slabs[r]);
+    if (cut.has_materials()) result.mesh.materials.push_back(cut.materials[r]);
   }
   result.mesh = without_unused_vertices(result.mesh);
   return result;

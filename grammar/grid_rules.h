@@ -88,11 +88,12 @@ struct GridCut {
 };
 
 /// Cuts `mesh` along the planes of every direction of `grid` (vertices within 1e-6 eps of a
-/// plane are moved onto it). Each flat face of `mesh` (edge-joined triangles in one plane within
-/// 1e-6 eps) is then re-triangulated per cell, keeping the vertices of `mesh` and only those cut
-/// vertices where cell borders turn or meet an edge between faces, so the copies of a unit
-/// meet at the same seam vertices wherever the exemplar repeats. Back-to-back double faces
-/// (the same corners in both orders) are cut once and doubled, so they stay exact doubles.
+/// plane are moved onto it). Each flat face of `mesh` (edge-joined triangles of one material in
+/// one plane within 1e-6 eps) is then re-triangulated per cell, keeping the vertices of `mesh`
+/// and only those cut vertices where cell borders turn or meet an edge between faces, so the
+/// copies of a unit meet at the same seam vertices wherever the exemplar repeats. Back-to-back
+/// double faces (the same corners in both orders, one material) are cut once and doubled, so
+/// they stay exact doubles. Every triangle keeps the material of the triangle it was cut from.
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps);
 
 /// A piece of a grid: the triangles whose slab classes along the directions are `classes`.

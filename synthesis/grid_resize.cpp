@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace dg {
 namespace {
 
@@ -60,9 +62,14 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
     vertices += placements.back().size() * piece.mesh.positions.size();
     triangles += placements.back().size() * piece.mesh.triangles.size();
   }
+  // Materials travel with the triangles when every piece carries them.
+  const bool with_materials = std::all_of(pieces.begin(), pieces.end(), [](const GridPiece& piece) {
+    return piece.mesh.triangles.empty() || piece.mesh.has_materials();
+  });
   TriangleMesh result;
   result.positions.reserve(vertices);
   result.triangles.reserve(triangles);
+  if (with_materials) result.materials.reserve(triangles);
   std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
   seam_vertices.reserve(vertices);
   for (std::size_t p = 0; p < pieces.size(); ++p) {
@@ -72,6 +79,7 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
       const auto base = static_cast<std::uint32_t>(result.positions.size());
       for (const Vec3& position : mesh.positions) result.positions.push_back(placement.apply(position));
       for (const Triangle& t : mesh.triangles) result.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+      if (with_materials) result.materials.insert(result.materials.end(), mesh.materials.begin(), mesh.materials.end());
       seam_vertices.insert(seam_vertices.end(), open.begin(), open.end());
     }
   }

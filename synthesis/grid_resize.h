@@ -18,7 +18,8 @@ inline constexpr double kSeamWeldFraction = 1e-4;
 
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
 /// range) and welds vertices closer than `weld_tolerance` (model units). Counts equal to the
-/// grid's own counts reproduce the exemplar. Throws InputError when a count is out of range
+/// grid's own counts reproduce the exemplar. Every triangle keeps its piece triangle's material
+/// when all pieces carry materials (the result has none otherwise). Throws InputError when a count is out of range
 /// (below a direction's min_units or the grid's range) or the number of counts does not match
 /// the grid's dimension.
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,

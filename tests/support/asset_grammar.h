@@ -13,4 +13,7 @@ namespace dg::test {
 /// context-free rules when `context_free` is set; r, eps and the exemplar as analyze sets them.
 ShapeGrammar asset_grammar(const std::string& name, const nlohmann::json& params, bool context_free);
 
+/// The same for a model built in code, with its materials, prepared with `options`.
+ShapeGrammar model_grammar(Model model, bool context_free, const PrepareOptions& options = {});
+
 }  // namespace dg::test

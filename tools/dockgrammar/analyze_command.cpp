@@ -52,6 +52,7 @@ void add_analyze_command(CLI::App& app) {
     grammar.eps = prepared.surface.eps();
     grammar.up_axis = model_up_axis(options->model.model_path, options->up);
     grammar.exemplar = prepared.model.mesh;
+    grammar.materials = prepared.model.materials;
     for (GridRule& rule : find_grids(prepared, symmetries)) {
       std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});

@@ -97,9 +97,10 @@ void add_generate_command(CLI::App& app) {
       const Variant variant = build_variant(grammar, plan, variant_options);
       const TriangleMesh& mesh = variant.mesh;
       const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
-      write_mesh(folder / file, mesh);
+      write_mesh_with_materials(folder / file, mesh, grammar.materials);
       if (options->pictures)
-        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, {}, {}, picture);
+        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, material_colors(mesh, grammar.materials), {},
+                           picture);
       nlohmann::json grids = nlohmann::json::object();
       for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
       const ShapeDerivation& d = variant.derivation;

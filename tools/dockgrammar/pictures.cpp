@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 namespace dg::cli {
@@ -50,6 +51,17 @@ Rgba8 class_color(std::size_t i) {
                                                   {100, 100, 100, 255},
                                                   {27, 158, 119, 255}}};
   return palette[i % palette.size()];
+}
+
+std::vector<Rgba8> material_colors(const TriangleMesh& mesh, const std::vector<Material>& materials) {
+  std::vector<Rgba8> colors;
+  if (materials.empty() || !mesh.has_materials()) return colors;
+  auto channel = [](double value) { return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(value, 0.0, 1.0))); };
+  for (std::uint32_t m : mesh.materials) {
+    const Vec3& c = materials.at(m).diffuse;
+    colors.push_back({channel(c.x()), channel(c.y()), channel(c.z()), 255});
+  }
+  return colors;
 }
 
 }  // namespace dg::cli

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace dg::cli {
 
@@ -34,5 +35,9 @@ MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& a
 
 /// A distinct, readable colour for class i (cycled).
 Rgba8 class_color(std::size_t i);
+
+/// One colour per triangle of `mesh`: its material's diffuse colour (8 bits per channel), or
+/// none (pictures use their default colour) when the mesh or `materials` has no materials.
+std::vector<Rgba8> material_colors(const TriangleMesh& mesh, const std::vector<Material>& materials);
 
 }  // namespace dg::cli

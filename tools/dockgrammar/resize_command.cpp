@@ -76,9 +76,10 @@ void add_resize_command(CLI::App& app) {
     const GridWithPieces& grid = grammar.grids.front();
     const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name),
                                             kSeamWeldFraction * grammar.eps);
-    write_mesh(options->output, result);
+    write_mesh_with_materials(options->output, result, grammar.materials);
     if (options->picture)
-      write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result, {}, {},
+      write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result,
+                         material_colors(result, grammar.materials), {},
                          picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up));
     if (!options->quiet) fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
   });

@@ -1,0 +1,138 @@
+// `resize` and `generate` write the grammar's materials: OBJ with mtllib/usemtl and its MTL,
+// checked face by face against the material fence's ground truth.
+
+#include "geometry/model_io.h"
+#include "geometry/png_reader.h"
+#include "grammar/grammar_file.h"
+#include "support/asset_grammar.h"
+#include "support/cli_run.h"
+#include "support/material_models.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+using dg::Vec3;
+
+namespace {
+
+// Reads an OBJ written by dockgrammar (v, f, mtllib, usemtl lines) and checks that every face's
+// material is the fence's material at the face's centroid; returns the faces read.
+std::size_t check_obj_materials(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  REQUIRE(in);
+  const std::vector<std::string> names = {"wood", "metal", "cap"};
+  std::vector<Vec3> positions;
+  std::string line, library, material;
+  std::size_t faces = 0;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "mtllib") {
+      words >> library;
+    } else if (keyword == "usemtl") {
+      words >> material;
+    } else if (keyword == "v") {
+      Vec3 p;
+      words >> p.x() >> p.y() >> p.z();
+      positions.push_back(p);
+    } else if (keyword == "f") {
+      std::size_t a = 0, b = 0, c = 0;
+      words >> a >> b >> c;
+      const Vec3 centroid = (positions.at(a - 1) + positions.at(b - 1) + positions.at(c - 1)) / 3.0;
+      INFO("face " << faces << " at " << centroid.transpose());
+      CHECK(material == names[dg::test::fence_material_at(centroid)]);
+      ++faces;
+    }
+  }
+  CHECK(library == path.stem().string() + ".mtl");
+  std::ifstream mtl(path.parent_path() / library);
+  const std::string text((std::istreambuf_iterator<char>(mtl)), std::istreambuf_iterator<char>());
+  CHECK(text.find("newmtl wood\nKd 0.55 0.35 0.2\n") != std::string::npos);
+  CHECK(text.find("newmtl metal\nKd 0.5 0.5 0.55\n") != std::string::npos);
+  CHECK(text.find("newmtl cap\nKd 0.1 0.1 0.1\n") != std::string::npos);
+  return faces;
+}
+
+// Pixels of a PNG clearly redder than blue (the fence's wood; grey and white are not).
+std::size_t brownish_pixels(const std::filesystem::path& png) {
+  std::size_t count = 0;
+  for (const dg::Rgba8& p : dg::read_png(png).pixels) count += p.r > p.b + 40 ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("materials: resize and generate write OBJ with the exemplar's materials", "[tools][materials]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-cli-test");
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_fence(4), false);
+  REQUIRE(grammar.grids.size() == 1);
+  dg::write_grammar(folder / "fence.grammar.json", grammar);
+  const std::string grammar_file = (folder / "fence.grammar.json").string();
+
+  const dg::test::CliRun resize = dg::test::run_cli("resize " + grammar_file + " --grid grid1=6 -q -o " +
+                                                        (folder / "wide.obj").string(), folder);
+  REQUIRE(resize.status == 0);
+  CHECK(check_obj_materials(folder / "wide.obj") > 0);
+
+  const dg::test::CliRun generate =
+      dg::test::run_cli("generate " + grammar_file + " --count 2 --seed 3 -q -o " + (folder / "variants").string(), folder);
+  REQUIRE(generate.status == 0);
+  for (const std::string name : {"variant_00000.obj", "variant_00001.obj"}) {
+    INFO(name);
+    CHECK(check_obj_materials(folder / "variants" / name) > 0);
+  }
+}
+
+TEST_CASE("materials: resize pictures show the materials' colours", "[tools][materials]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-picture-test");
+  dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::material_fence(4), false);
+  dg::write_grammar(folder / "coloured.grammar.json", grammar);
+  grammar.materials.clear();
+  dg::write_grammar(folder / "plain.grammar.json", grammar);
+  for (const std::string name : {"coloured", "plain"}) {
+    const dg::test::CliRun run = dg::test::run_cli("resize " + (folder / (name + ".grammar.json")).string() +
+                                                       " --grid grid1=5 --picture -q -o " + (folder / (name + ".obj")).string(),
+                                                   folder);
+    REQUIRE(run.status == 0);
+  }
+  CHECK(brownish_pixels(folder / "coloured.png") > 1000);
+  CHECK(brownish_pixels(folder / "plain.png") == 0);
+}
+
+TEST_CASE("materials: analyze and resize an OBJ + MTL with painted windows, read the result back", "[tools][materials]") {
+  // The whole way: OBJ + MTL in, grammar, resized OBJ + MTL out, read again by read_model.
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-roundtrip-test");
+  const dg::Model wall = dg::test::painted_wall(6, 4);
+  dg::write_mesh_with_materials(folder / "wall.obj", wall.mesh, wall.materials);
+  const dg::test::CliRun analyze = dg::test::run_cli(
+      "analyze " + (folder / "wall.obj").string() + " --match-materials -q -o " + (folder / "grammar").string(), folder);
+  REQUIRE(analyze.status == 0);
+  const std::filesystem::path grammar_file = folder / "grammar" / "wall.grammar.json";
+  const dg::ShapeGrammar grammar = dg::read_grammar(grammar_file);
+  CHECK(grammar.materials == wall.materials);
+  REQUIRE(grammar.grids.size() == 1);
+  REQUIRE(grammar.grids[0].rule.directions.size() == 2);
+  std::vector<int> counts;
+  for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(d.count + 3);
+  const dg::test::CliRun resize = dg::test::run_cli(
+      "resize " + grammar_file.string() + " --grid grid1=" + std::to_string(counts[0]) + "x" + std::to_string(counts[1]) +
+          " -q -o " + (folder / "wide.obj").string(),
+      folder);
+  REQUIRE(resize.status == 0);
+
+  const dg::Model wide = dg::read_model(folder / "wide.obj");
+  REQUIRE(wide.mesh.has_materials());
+  REQUIRE(wide.materials.size() == 2);
+  double glass = 0.0;
+  for (std::size_t t = 0; t < wide.mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = wide.mesh.corners(t);
+    const dg::Material& material = wide.materials[wide.mesh.materials[t]];
+    INFO("triangle " << t << " at " << ((a + b + c) / 3.0).transpose());
+    REQUIRE(material == wall.materials[dg::test::painted_wall_material_at((a + b + c) / 3.0)]);
+    if (material.name == "glass") glass += 0.5 * wide.mesh.area_vector(t).norm();
+  }
+  CHECK(glass == Approx((counts[0] + 1) * (counts[1] + 1) * 1.5).epsilon(1e-9));
+}
