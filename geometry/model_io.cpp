@@ -82,6 +82,11 @@ void check_model(const std::string& name, const Model& model) {
       }
     }
   }
+  if (!mesh.materials.empty() && mesh.materials.size() != mesh.triangles.size())
+    throw std::logic_error(name + ": the reader gave " + std::to_string(mesh.materials.size()) + " materials for " +
+                           std::to_string(mesh.triangles.size()) + " triangles");
+  for (std::uint32_t material : mesh.materials)
+    if (material >= model.materials.size()) throw std::logic_error(name + ": material index out of range");
   check_coordinates(name, mesh.positions, "vertex");
   check_coordinates(name, model.cloud.positions, "point");
 }

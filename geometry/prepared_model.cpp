@@ -71,6 +71,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   } catch (const InputError& e) {
     throw InputError(name + ": " + e.what());
   }
+  prepared.materials_matched = options.match_materials && model.mesh.has_materials();
   prepared.model = std::move(model);
   return prepared;
 }

@@ -36,6 +36,9 @@ struct PreparedModel {
   std::vector<FeatureEdge> feature_edges;  ///< empty for point clouds
   FeatureLines feature_lines;              ///< empty for point clouds
   VoxelSurface surface;
+  /// The surface keeps materials apart and material borders are feature edges
+  /// (PrepareOptions::match_materials on a mesh with materials).
+  bool materials_matched = false;
   std::vector<StageTiming> timings;  ///< load, clean, feature lines, voxel surface
 };
 

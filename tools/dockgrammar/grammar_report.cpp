@@ -1,4 +1,5 @@
 #include "tools/dockgrammar/grammar_report.h"
+#include "tools/dockgrammar/model_summary.h"
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
@@ -173,6 +174,18 @@ std::string generate_rules_text(const AnalysisReport& report) {
          "--rules context-free uses them";
 }
 
+// The model's materials and whether symmetries had to respect them.
+std::string materials_paragraph(const PreparedModel& prepared) {
+  const std::vector<Material>& materials = prepared.model.materials;
+  if (materials.empty()) return "";
+  std::string names;
+  for (const Material& m : materials) names += fmt::format("{}`{}`", names.empty() ? "" : ", ", m.name);
+  return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries {} (`--match-materials`).\n\n",
+                     materials.size(), names,
+                     prepared.materials_matched ? "map every material onto itself and material borders are feature lines"
+                                                : "are geometric; materials need not match");
+}
+
 }  // namespace
 
 std::string analysis_text(const AnalysisReport& report) {
@@ -234,6 +247,8 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
+          {"materials", material_names(report.prepared.model.materials)},
+          {"match_materials", report.prepared.materials_matched},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},
           {"docking_sites", docking_sites_json(report)},
@@ -257,6 +272,7 @@ void write_analysis_report(const AnalysisReport& report) {
                     "{} boundary and {} non-manifold edges, {} components; {} open edges split at T-junctions for the analysis.\n\n",
                     prepared.surface.r(), prepared.surface.eps(), c.vertices, c.triangles, c.degenerate_dropped,
                     c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
+  md += materials_paragraph(prepared);
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
   md += "```\n\n## Grid rules\n\n";

@@ -30,7 +30,7 @@ struct AnalysisReport {
 /// Short readable summary for stdout.
 std::string analysis_text(const AnalysisReport& report);
 
-/// {r, eps, symmetries, families, docking_sites, dockers, operations, nonterminals, productions,
+/// {r, eps, materials (names), match_materials, symmetries, families, docking_sites, dockers, operations, nonterminals, productions,
 /// grids: [{name, dims, counts, transforms, count_range, pieces}], grammar_file, timings_s, missing}.
 nlohmann::json analysis_json(const AnalysisReport& report);
 

@@ -51,15 +51,19 @@ std::string summary_text(const PreparedModel& prepared) {
   return out;
 }
 
+nlohmann::json material_names(const std::vector<Material>& materials) {
+  nlohmann::json names = nlohmann::json::array();
+  for (const Material& material : materials) names.push_back(material.name);
+  return names;
+}
+
 nlohmann::json summary_json(const PreparedModel& prepared) {
   const VoxelSurfaceStats stats = prepared.surface.stats();
   nlohmann::json timings = nlohmann::json::object();
   for (const StageTiming& t : prepared.timings) timings[t.stage] = t.seconds;
-  nlohmann::json material_names = nlohmann::json::array();
-  for (const Material& material : prepared.model.materials) material_names.push_back(material.name);
   return {{"model", prepared.model.source_path},
           {"cleaning", to_json(prepared.cleaning)},
-          {"materials", material_names},
+          {"materials", material_names(prepared.model.materials)},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},
           {"voxel_surface",
