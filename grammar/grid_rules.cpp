@@ -148,6 +148,9 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   const double pitch = t.norm();
   if (pitch <= 0.0) return std::nullopt;
   const Vec3 d = t / pitch;
+  // Every plane crosses the model, so min_repeats units need that many pitches of extent along d
+  // (bounded by the bounding box): a cheap rejection of large powers of short motions.
+  if (d.cwiseAbs().dot(prepared.cleaning.bounds.size()) < min_repeats * pitch) return std::nullopt;
   const double half = 0.5 * surface.eps() * (std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()));
 
   std::vector<char> in_r(surface.cell_count(), 0), in_xi(surface.cell_count(), 0), in_image(surface.cell_count(), 0);
