@@ -47,8 +47,11 @@ std::vector<std::pair<int, std::vector<std::size_t>>> primitive_triangles(const 
 
 json material_json(const Material& material) {
   const Vec3& c = material.diffuse;
-  return {{"name", material.name},
-          {"pbrMetallicRoughness", {{"baseColorFactor", {c.x(), c.y(), c.z(), 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}};
+  json result = {{"name", material.name},
+                 {"pbrMetallicRoughness",
+                  {{"baseColorFactor", {c.x(), c.y(), c.z(), material.opacity}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}};
+  if (material.opacity < 1.0) result["alphaMode"] = "BLEND";
+  return result;
 }
 
 }  // namespace

@@ -272,7 +272,8 @@ Mat4 local_transform(const GltfDocument& doc, const json& node) {
 }
 
 /// Index into model.materials for a primitive's material (glTF index, or -1 for none), adding the
-/// material on first use: its name (or "material N"), baseColorFactor as the diffuse colour.
+/// material on first use: its name (or "material N"), baseColorFactor as the diffuse colour (and,
+/// with alphaMode BLEND, its alpha as the opacity).
 std::uint32_t model_material(const GltfDocument& doc, std::int64_t gltf_index, std::map<std::int64_t, std::uint32_t>& known,
                              std::vector<Material>& materials) {
   const auto found = known.find(gltf_index);
@@ -286,6 +287,9 @@ std::uint32_t model_material(const GltfDocument& doc, std::int64_t gltf_index, s
     const auto factor = pbr.value("baseColorFactor", std::vector<double>{1.0, 1.0, 1.0, 1.0});
     if (factor.size() < 3) doc.fail("baseColorFactor of material " + std::to_string(gltf_index) + " has fewer than 3 numbers");
     material.diffuse = Vec3(factor[0], factor[1], factor[2]).cwiseMax(0.0).cwiseMin(1.0);
+    // Alpha only counts in BLEND mode (OPAQUE, the default, ignores it; MASK cuts, it does not blend).
+    if (factor.size() >= 4 && source.value("alphaMode", std::string("OPAQUE")) == "BLEND")
+      material.opacity = std::clamp(factor[3], 0.0, 1.0);
   }
   const auto index = static_cast<std::uint32_t>(materials.size());
   materials.push_back(std::move(material));

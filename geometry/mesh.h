@@ -9,10 +9,12 @@
 namespace dg {
 
 /// A surface material as the model file names it (OBJ `usemtl` / MTL `newmtl`, glTF material),
-/// with the colour it shows: MTL `Kd` or glTF `baseColorFactor`, linear RGB in 0..1.
+/// with the colour it shows: MTL `Kd` or glTF `baseColorFactor`, linear RGB in 0..1, and its
+/// opacity in 0..1 (1 = opaque): MTL `d` (or 1 - `Tr`), glTF alpha of a BLEND material.
 struct Material {
   std::string name;
   Vec3 diffuse = Vec3::Constant(0.8);
+  double opacity = 1.0;
 
   friend bool operator==(const Material&, const Material&) = default;
 };

@@ -4,6 +4,8 @@
 #include "geometry/model_reader.h"
 #include "geometry/text_reader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <limits>
@@ -40,7 +42,8 @@ std::string_view trimmed(std::string_view rest) {
   return rest;
 }
 
-/// Fills the diffuse colours of `materials` from the `newmtl` / `Kd r g b` entries of one MTL file.
+/// Fills the colours of `materials` from the `newmtl`, `Kd r g b` and `d` (or `Tr`) entries of one
+/// MTL file.
 /// A library that cannot be read leaves the default colours: the geometry does not depend on it.
 void read_material_colours(const std::filesystem::path& library, std::vector<Material>& materials) {
   std::ifstream in(library, std::ios::binary);
@@ -59,6 +62,10 @@ void read_material_colours(const std::filesystem::path& library, std::vector<Mat
       current = nullptr;
       for (Material& material : materials)
         if (material.name == name) current = &material;
+    } else if ((keyword == "d" || keyword == "Tr") && current) {
+      double value = 0.0;
+      if (read_number(rest, value) && std::isfinite(value))
+        current->opacity = std::clamp(keyword == "d" ? value : 1.0 - value, 0.0, 1.0);
     } else if (keyword == "Kd" && current) {
       Vec3 kd;
       if (read_number(rest, kd.x()) && read_number(rest, kd.y()) && read_number(rest, kd.z()) && kd.allFinite())

@@ -89,6 +89,11 @@ void write_mtl(std::ostream& out, const std::vector<Material>& materials, const 
       append_number(text, materials[i].diffuse[channel]);
     }
     text += '\n';
+    if (materials[i].opacity < 1.0) {
+      text += "d ";
+      append_number(text, materials[i].opacity);
+      text += '\n';
+    }
   }
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
 }

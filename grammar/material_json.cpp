@@ -9,8 +9,11 @@ namespace dg {
 
 nlohmann::json materials_json(const std::vector<Material>& materials) {
   nlohmann::json list = nlohmann::json::array();
-  for (const Material& m : materials)
-    list.push_back({{"name", m.name}, {"diffuse", {m.diffuse.x(), m.diffuse.y(), m.diffuse.z()}}});
+  for (const Material& m : materials) {
+    nlohmann::json entry = {{"name", m.name}, {"diffuse", {m.diffuse.x(), m.diffuse.y(), m.diffuse.z()}}};
+    if (m.opacity < 1.0) entry["opacity"] = m.opacity;
+    list.push_back(std::move(entry));
+  }
   return list;
 }
 
@@ -25,7 +28,15 @@ std::vector<Material> read_materials_json(const nlohmann::json& list, const std:
     if (!diffuse.is_array() || diffuse.size() != 3 ||
         !std::all_of(diffuse.begin(), diffuse.end(), [](const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }))
       throw InputError(what + " needs \"diffuse\": three finite numbers");
-    materials.push_back({entry.at("name").get<std::string>(), Vec3(diffuse[0].get<double>(), diffuse[1].get<double>(), diffuse[2].get<double>())});
+    double opacity = 1.0;
+    if (entry.contains("opacity")) {
+      const nlohmann::json& value = entry.at("opacity");
+      if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() <= 1.0))
+        throw InputError(what + ": \"opacity\" must be a number from 0 to 1");
+      opacity = value.get<double>();
+    }
+    materials.push_back({entry.at("name").get<std::string>(),
+                         Vec3(diffuse[0].get<double>(), diffuse[1].get<double>(), diffuse[2].get<double>()), opacity});
   }
   return materials;
 }

@@ -115,3 +115,24 @@ TEST_CASE("materials: a mesh without materials is written exactly as write_mesh 
   CHECK_FALSE(std::filesystem::exists(folder / "no_indices.mtl"));
   CHECK_FALSE(std::filesystem::exists(folder / "no_list.mtl"));
 }
+
+TEST_CASE("materials: opacity survives OBJ + MTL (d) and GLB (alpha, BLEND), and MTL Tr reads as 1 - Tr",
+          "[geometry][io][materials]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-material-opacity-test");
+  std::vector<dg::Material> materials = kMaterials;
+  materials[1].opacity = 0.375;
+  for (const char* file : {"wall.obj", "wall.glb"}) {
+    INFO(file);
+    dg::write_mesh_with_materials(folder / file, two_squares(), materials);
+    const dg::Model back = dg::read_model(folder / file);
+    REQUIRE(back.materials.size() == 2);
+    CHECK(back.materials[0].opacity == 1.0);
+    CHECK(back.materials[1].opacity == 0.375);
+  }
+  CHECK(file_text(folder / "wall.mtl").find("newmtl dark_glass\nKd 0.1 0.3 0.9\nd 0.375\n") != std::string::npos);
+  CHECK(file_text(folder / "wall.mtl").find("newmtl brick\nKd 0.8 0.2 0.1\n\n") != std::string::npos);  // opaque: no d
+
+  std::ofstream(folder / "tr.mtl") << "newmtl glass\nKd 0.2 0.2 0.2\nTr 0.75\n";
+  std::ofstream(folder / "tr.obj") << "mtllib tr.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl glass\nf 1 2 3\n";
+  CHECK(dg::read_model(folder / "tr.obj").materials.at(0).opacity == 0.25);
+}

@@ -444,13 +444,14 @@ TEST_CASE("glTF materials: each primitive's triangles get its material and baseC
       {"attributes": {"POSITION": 0}, "indices": 1}, {"attributes": {"POSITION": 0}, "indices": 1, "material": 0})";
   text.replace(text.find(primitive), primitive.size(), with_materials);
   text.replace(text.find(R"("buffers")"), 0, R"("materials": [{"name": "stone"},
-      {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1.0, 1.0]}}], )");
+      {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1.0, 0.5]}}], )");
   write_bytes(folder / "materials.gltf", text);
   const Model model = dg::read_model(folder / "materials.gltf");
   REQUIRE(model.mesh.triangles.size() == 6);
   REQUIRE(model.materials.size() == 3);
   CHECK(model.materials[0].name == "material 1");
   CHECK(model.materials[0].diffuse == Vec3(0.5, 0.25, 1.0));
+  CHECK(model.materials[0].opacity == 1.0);  // alpha 0.5, but alphaMode OPAQUE (the default) ignores it
   CHECK(model.materials[1].name == "default");
   CHECK(model.materials[2].name == "stone");
   CHECK(model.materials[2].diffuse == Vec3(1.0, 1.0, 1.0));

@@ -2,6 +2,8 @@
 // keeps them: checked against the material fence's ground truth (tests/support/material_models.h).
 
 #include "grammar/grammar_file.h"
+#include "grammar/material_json.h"
+#include "geometry/errors.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
 #include "support/material_models.h"
@@ -111,4 +113,15 @@ TEST_CASE("materials: the grammar file keeps the material list and every piece's
   const dg::ShapeGrammar plain_read = dg::read_grammar(folder / "plain.grammar.json");
   CHECK(plain_read.materials.empty());
   CHECK_FALSE(plain_read.grids[0].pieces[0].mesh.has_materials());
+}
+
+TEST_CASE("materials: the grammar file keeps a material's opacity and rejects one outside 0..1", "[grammar][materials]") {
+  std::vector<dg::Material> materials = {{"wall", Vec3(0.9, 0.9, 0.9)}, {"glass", Vec3(0.2, 0.3, 0.4), 0.5}};
+  const nlohmann::json list = dg::materials_json(materials);
+  CHECK_FALSE(list[0].contains("opacity"));  // opaque materials are written as before
+  CHECK(list[1].at("opacity") == 0.5);
+  CHECK(dg::read_materials_json(list, "test") == materials);
+  nlohmann::json bad = list;
+  bad[1]["opacity"] = 1.5;
+  CHECK_THROWS_AS(dg::read_materials_json(bad, "test"), dg::InputError);
 }
