@@ -69,8 +69,7 @@ class LineTracer {
 
   FeatureLine follow(std::uint32_t start, std::uint32_t e) {
     FeatureLine line;
-    line.boundary = features_[e].kind == EdgeKind::boundary;
-    line.material = features_[e].kind == EdgeKind::material;
+    line.kind = line_class(features_[e].kind);
     line.vertices.push_back(start);
     std::uint32_t v = start;
     while (true) {
@@ -147,8 +146,7 @@ void sample_line(const TriangleMesh& mesh, std::uint32_t line_index, const Featu
     sample.binormal = sample.tangent.cross(sample.normal);
     sample.line = line_index;
     sample.descriptor.dihedral_degrees = line.dihedrals[segment];
-    sample.descriptor.boundary = line.boundary;
-    sample.descriptor.material = line.material;
+    sample.descriptor.kind = line.kind;
     const std::size_t nearest = t < 0.5 ? segment : (segment + 1) % points.size();
     sample.descriptor.curvature = vertex_curvature(points, line.closed, nearest);
     samples.push_back(sample);

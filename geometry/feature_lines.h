@@ -18,8 +18,9 @@ struct FeatureLine {
   std::vector<Vec3> normals;            ///< unit surface normal per edge (vertices.size() - 1)
   std::vector<double> dihedrals;        ///< signed dihedral angle per edge, degrees
   bool closed = false;                  ///< last vertex connects back to the first
-  bool boundary = false;                ///< made of boundary edges
-  bool material = false;                ///< made of material-border edges (neither: sharp/non-manifold)
+  /// What the line runs along: boundary, material-border or crease edges (sharp; non-manifold
+  /// edges count as creases).
+  EdgeKind kind = EdgeKind::sharp;
   double length = 0.0;                  ///< model units
 };
 
@@ -27,8 +28,7 @@ struct FeatureLine {
 struct FeatureDescriptor {
   double dihedral_degrees = 0.0;  ///< signed dihedral of the edge under the sample (0 on boundaries)
   double curvature = 0.0;         ///< turning angle per unit length of the line near the sample (rad/unit)
-  bool boundary = false;          ///< lies on a boundary line
-  bool material = false;          ///< lies on a material-border line
+  EdgeKind kind = EdgeKind::sharp;  ///< the kind of the line under the sample (FeatureLine::kind)
 };
 
 /// A point on a feature line with an orthonormal frame (tangent along the line, normal =

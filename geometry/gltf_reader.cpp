@@ -440,7 +440,8 @@ Model read_gltf(const std::filesystem::path& path, std::string_view bytes, bool 
     std::map<std::int64_t, std::uint32_t> known;
     for (const json& root : root_nodes(doc)) add_hierarchy(doc, root, visited, known, model);
     // A file whose primitives name no material has none (not one "default" for everything).
-    if (model.materials.size() == 1 && model.materials[0].name == "default" && known.count(-1) == 1) {
+    const bool any_named = !known.empty() && known.rbegin()->first >= 0;  // keys ascend; -1 = none
+    if (!any_named) {
       model.materials.clear();
       model.mesh.materials.clear();
     }

@@ -28,7 +28,8 @@ void write_obj(std::ostream& out, const TriangleMesh& mesh, const ObjMaterials* 
 /// becomes "material_I", and a name used before gets "_I" appended until it is new (I = the
 /// material's index).
 std::vector<std::string> obj_material_names(const std::vector<Material>& materials);
-/// MTL text: "newmtl NAME" and "Kd r g b" (the diffuse colour) per material, in order.
+/// MTL text: "newmtl NAME", "Kd r g b" (the diffuse colour) and, below 1, "d OPACITY" per
+/// material, in order.
 void write_mtl(std::ostream& out, const std::vector<Material>& materials, const std::vector<std::string>& names);
 /// PLY binary little endian: double x y z (+ uchar red green blue), uchar/uint vertex_indices
 /// lists (+ uchar red green blue per face with `face_colors`, one per triangle).
@@ -37,7 +38,8 @@ void write_ply(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rg
 /// glTF 2.0 binary: one scene, one node, one mesh; float32 POSITION with min/max, optional
 /// COLOR_0 (normalized unsigned bytes), uint32 indices. One primitive, or with `materials` (the
 /// mesh must carry material indices) one primitive per material used, in material order, each
-/// naming its material (baseColorFactor = the diffuse colour, not metallic, fully rough).
+/// naming its material (baseColorFactor = the diffuse colour and the opacity, alphaMode BLEND
+/// below 1; not metallic, fully rough).
 void write_glb(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rgb>* colors,
                const std::vector<Material>* materials = nullptr);
 

@@ -27,9 +27,10 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh,
 
 /// Writes a mesh with its materials (`materials`, indexed by mesh.materials) as write_mesh does,
 /// atomically: OBJ with "mtllib NAME.mtl" and "usemtl" before each run of triangles of one
-/// material, plus NAME.mtl next to it ("newmtl", "Kd" = the diffuse colour); PLY with a colour
-/// per face (the diffuse colour as uchar red green blue); GLB with one primitive per material
-/// used, each with its material (baseColorFactor = the diffuse colour). Without materials (an
+/// material, plus NAME.mtl next to it ("newmtl", "Kd" = the diffuse colour, "d" = the opacity
+/// below 1); PLY with a colour per face (the diffuse colour as uchar red green blue); GLB with one
+/// primitive per material used, each with its material (baseColorFactor = the diffuse colour and
+/// the opacity; alphaMode BLEND below 1). Without materials (an
 /// empty list or a mesh without indices) the file is exactly what write_mesh writes. Throws as
 /// write_mesh, and std::invalid_argument for a material index beyond the list.
 void write_mesh_with_materials(const std::filesystem::path& path, const TriangleMesh& mesh,

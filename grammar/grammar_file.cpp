@@ -286,8 +286,7 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
   auto load = [&](const std::string& relative, const nlohmann::json& owner, const char* runs_key = "material_runs") {
     const std::filesystem::path file = path.parent_path() / relative;
     if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar mesh " + file.string() + " is missing");
-    TriangleMesh mesh = read_model(file).mesh;
-    mesh.materials.clear();
+    TriangleMesh mesh = read_model(file).mesh;  // a PLY sidecar: no materials of its own
     if (owner.contains(runs_key))
       mesh.materials = read_material_runs(owner.at(runs_key), mesh.triangles.size(), grammar.materials.size(),
                                           where + ": " + relative);

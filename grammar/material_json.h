@@ -12,11 +12,12 @@
 
 namespace dg {
 
-/// The material list as JSON: [{"name": ..., "diffuse": [r, g, b]}, ...] (linear RGB 0..1).
+/// The material list as JSON: [{"name": ..., "diffuse": [r, g, b]}, ...] (linear RGB 0..1), with
+/// "opacity" only for a material below 1.
 nlohmann::json materials_json(const std::vector<Material>& materials);
 
 /// Reads a material list written by materials_json. Throws InputError (prefixed by `where`)
-/// when an entry has no name or no three finite diffuse numbers.
+/// when an entry has no name, no three finite diffuse numbers or an opacity outside 0..1.
 std::vector<Material> read_materials_json(const nlohmann::json& list, const std::string& where);
 
 /// The material indices of `mesh`'s triangles as runs in triangle order: [[material, count], ...]

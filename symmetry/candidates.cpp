@@ -20,7 +20,7 @@ Mat3 frame_matrix(const Vec3& tangent, const Vec3& normal, const Vec3& binormal)
 }
 
 bool compatible(const FeatureDescriptor& a, const FeatureDescriptor& b, double dihedral_tolerance) {
-  if (a.boundary != b.boundary || a.material != b.material) return false;
+  if (a.kind != b.kind) return false;
   if (std::abs(a.dihedral_degrees - b.dihedral_degrees) > dihedral_tolerance) return false;
   const double curvature_scale = std::max(std::abs(a.curvature), std::abs(b.curvature));
   return std::abs(a.curvature - b.curvature) <= 0.25 * curvature_scale + 1e-9;

@@ -202,7 +202,7 @@ class Matcher {
     std::sort(nearest.begin(), nearest.end());
     const double tolerance = options_.dihedral_tolerance_degrees;
     auto compatible = [&](const Anchor& c, const Anchor& e) {
-      return e.descriptor.boundary == c.descriptor.boundary &&
+      return e.descriptor.kind == c.descriptor.kind &&
              std::abs(e.descriptor.dihedral_degrees - c.descriptor.dihedral_degrees) <= tolerance;
     };
     // The exemplar anchors whose dihedral key lies within the tolerance of c's.

@@ -24,7 +24,7 @@ TEST_CASE("feature lines of a cube are its 12 edges", "[geometry]") {
     CHECK(std::abs(s.tangent.dot(s.normal)) < 1e-12);
     CHECK(s.binormal.isApprox(s.tangent.cross(s.normal)));
     CHECK(s.descriptor.dihedral_degrees == Approx(90.0));
-    CHECK_FALSE(s.descriptor.boundary);
+    CHECK(s.descriptor.kind != dg::EdgeKind::boundary);
   }
 }
 
@@ -37,7 +37,7 @@ TEST_CASE("boundary of an open square is one loop split at its corners", "[geome
   const dg::FeatureLines lines = dg::extract_feature_lines(square, edges, 0.5);
   CHECK(lines.lines.size() == 4);
   CHECK(lines.total_length() == Approx(4.0));
-  for (const auto& line : lines.lines) CHECK(line.boundary);
+  for (const auto& line : lines.lines) CHECK(line.kind == dg::EdgeKind::boundary);
 }
 
 TEST_CASE("a smooth sphere has no feature lines, a cylinder rim is a closed loop", "[geometry]") {
