@@ -30,7 +30,8 @@ std::vector<bool> first_of_duplicates(const TriangleMesh& mesh) {
 
 }  // namespace
 
-std::vector<FeatureEdge> find_feature_edges(const TriangleMesh& mesh, double sharp_angle_degrees, bool material_borders) {
+std::vector<FeatureEdge> find_feature_edges(const TriangleMesh& mesh, double sharp_angle_degrees,
+                                            std::span<const std::uint32_t> material_classes) {
   const std::vector<bool> keep = first_of_duplicates(mesh);
   std::vector<Vec3> normals(mesh.triangles.size());
   std::vector<HalfEdge> half_edges;
@@ -76,8 +77,9 @@ std::vector<FeatureEdge> find_feature_edges(const TriangleMesh& mesh, double sha
       const Vec3 to_opposite = mesh.positions[half_edges[i + 1].opposite] - mesh.positions[edge.v0];
       if (n0.dot(to_opposite) > 0.0) edge.dihedral_degrees = -edge.dihedral_degrees;
       is_feature = cosine < cos_threshold;
-      if (!is_feature && material_borders && mesh.has_materials() &&
-          mesh.materials[half_edges[i].triangle] != mesh.materials[half_edges[i + 1].triangle]) {
+      if (!is_feature && !material_classes.empty() && mesh.has_materials() &&
+          material_classes[mesh.materials[half_edges[i].triangle]] !=
+              material_classes[mesh.materials[half_edges[i + 1].triangle]]) {
         edge.kind = EdgeKind::material;
         is_feature = true;
       }

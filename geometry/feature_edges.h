@@ -4,6 +4,7 @@
 #include "geometry/mesh.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace dg {
@@ -27,11 +28,12 @@ struct FeatureEdge {
 };
 
 /// Boundary, sharp and non-manifold edges of a welded mesh, sorted by (v0, v1); with
-/// `material_borders` (and a mesh that has materials), also the material-border edges.
+/// `material_classes` (the matching class of each material index, see material_classes(); empty =
+/// none) and a mesh that has materials, also the edges between materials of different classes.
 /// Exact duplicate triangles (same vertex set, either orientation) are counted once, so
 /// back-to-back double faces do not turn every edge into a feature.
 std::vector<FeatureEdge> find_feature_edges(const TriangleMesh& mesh,
                                             double sharp_angle_degrees = kDefaultSharpAngleDegrees,
-                                            bool material_borders = false);
+                                            std::span<const std::uint32_t> material_classes = {});
 
 }  // namespace dg

@@ -1,6 +1,7 @@
 #include "geometry/prepared_model.h"
 
 #include "geometry/errors.h"
+#include "geometry/material_classes.h"
 #include "geometry/model_io.h"
 #include "geometry/stopwatch.h"
 #include "geometry/t_junctions.h"
@@ -39,10 +40,10 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   PreparedModel prepared;
   Stopwatch clock;
   const std::string name = model.source_path.empty() ? std::string("model") : model.source_path;
+  const bool matching_materials = options.match_materials || !options.same_materials.empty();
   VoxelSurfaceOptions voxel_options;
   voxel_options.r = options.r;
   voxel_options.eps = options.eps;
-  voxel_options.separate_materials = options.match_materials;
   try {
     if (model.is_point_cloud()) {
       prepared.cleaning = clean_point_cloud(model.cloud);
@@ -59,7 +60,10 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
             resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
       prepared.timings.push_back({"clean", clock.lap()});
       report_progress(progress, "feature lines", 0.0);
-      prepared.feature_edges = find_feature_edges(model.mesh, options.sharp_angle_degrees, options.match_materials);
+      if (matching_materials && model.mesh.has_materials())
+        voxel_options.material_classes = material_classes(model.materials, options.same_materials);
+      prepared.feature_edges =
+          find_feature_edges(model.mesh, options.sharp_angle_degrees, voxel_options.material_classes);
       const double r = options.r > 0.0 ? options.r : default_radius(model.mesh.bounds());
       const double eps = options.eps > 0.0 ? options.eps : r / 4.0;
       prepared.feature_lines =
@@ -71,7 +75,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   } catch (const InputError& e) {
     throw InputError(name + ": " + e.what());
   }
-  prepared.materials_matched = options.match_materials && model.mesh.has_materials();
+  prepared.materials_matched = matching_materials && model.mesh.has_materials();
   prepared.model = std::move(model);
   return prepared;
 }

@@ -28,6 +28,10 @@ struct PrepareOptions {
   /// Symmetries must also map materials onto the same materials, and material borders are feature
   /// lines (for patterns drawn only in materials on flat walls). Off: geometry alone, as in paper 001.
   bool match_materials = false;
+  /// Groups of materials that match one another, each a comma-separated list of names or '*'
+  /// patterns (material_classes()), for tints that vary at random. Not empty: materials are
+  /// matched as with match_materials.
+  std::vector<std::string> same_materials;
 };
 
 struct PreparedModel {

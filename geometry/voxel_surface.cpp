@@ -303,7 +303,8 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
     const double length = n.norm();
     if (length <= 0.0) return;
     const Vec3 unit = n / length;
-    const std::uint32_t material = options.separate_materials && mesh.has_materials() ? mesh.materials[t] : 0;
+    const std::uint32_t material =
+        !options.material_classes.empty() && mesh.has_materials() ? options.material_classes[mesh.materials[t]] : 0;
     triangle_planes[t] = {{unit, unit.dot(mesh.positions[mesh.triangles[t][0]]), material}, 0.5 * length};
   });
   const double cos_tolerance = std::cos(options.plane_merge_angle_degrees * std::numbers::pi / 180.0);

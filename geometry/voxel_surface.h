@@ -49,8 +49,9 @@ struct VoxelSurfaceOptions {
   double plane_merge_angle_degrees = 1.0;
   /// ... and their offsets differ by less than this fraction of eps.
   double plane_merge_offset = 0.05;
-  /// Cell planes keep the material of their triangles (CellPlane::material) instead of 0.
-  bool separate_materials = false;
+  /// Empty: every cell plane has material 0. Else the matching class of each material index
+  /// (material_classes()): cell planes keep the class of their triangles (CellPlane::material).
+  std::vector<std::uint32_t> material_classes;
 };
 
 /// Counts for reports.

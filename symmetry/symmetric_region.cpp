@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <span>
 
 namespace dg {
 
@@ -45,6 +47,12 @@ class ImageCells {
   ImageCells(const VoxelSurface& surface, const VoxelCoord& voxel) : surface_(surface), voxel_(voxel) {
     const std::int64_t direct = surface.find(voxel);
     if (direct >= 0) cells_.push_back(static_cast<std::uint32_t>(direct));
+    has_direct_ = direct >= 0;
+  }
+
+  // The voxel holding the image of the centre, when it is a surface cell.
+  std::optional<std::uint32_t> direct() const {
+    return has_direct_ ? std::optional<std::uint32_t>(cells_.front()) : std::nullopt;
   }
 
   // Calls `found(cell)` on the cells until it returns true; widens to the block once if needed.
@@ -71,6 +79,7 @@ class ImageCells {
   const VoxelSurface& surface_;
   VoxelCoord voxel_;
   std::vector<std::uint32_t> cells_;
+  bool has_direct_ = false;
   bool widened_ = false;
 };
 
@@ -80,15 +89,35 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
   const Vec3 centre = surface_.centre(cell);
   ImageCells image(surface_, surface_.voxel_of(t.apply(centre)));
 
-  for (const CellPlane& plane : surface_.planes(cell)) {
-    const Vec3 foot = t.apply(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
+  const std::span<const CellPlane> planes = surface_.planes(cell);
+  for (const CellPlane& plane : planes) {
+    const Vec3 source_foot = centre - (plane.normal.dot(centre) - plane.offset) * plane.normal;
+    const Vec3 foot = t.apply(source_foot);
     const Vec3 normal = t.apply_direction(plane.normal);
-    const bool found = image.any([&](std::uint32_t other) {
-      for (const CellPlane& candidate : surface_.planes(other)) {
-        if (candidate.material == plane.material && std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
-            std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_)
-          return true;
+    auto on_image_plane = [&](const CellPlane& candidate) {
+      return std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
+             std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_;
+    };
+    // A cell with one material on this plane lies inside a painted area, not on its border, so the
+    // voxel holding its image decides alone when it holds the plane: a neighbour of another colour
+    // may not stand in for it (else a strip three voxels wide would match its shifted copy).
+    const bool inside_one_material = std::none_of(planes.begin(), planes.end(), [&](const CellPlane& other) {
+      return other.material != plane.material && std::abs(other.normal.dot(plane.normal)) > cos_tolerance_ &&
+             std::abs(other.normal.dot(source_foot) - other.offset) < offset_tolerance_;
+    });
+    if (const std::optional<std::uint32_t> direct = image.direct(); direct && inside_one_material) {
+      const std::span<const CellPlane> direct_planes = surface_.planes(*direct);
+      if (std::any_of(direct_planes.begin(), direct_planes.end(), on_image_plane)) {
+        if (std::none_of(direct_planes.begin(), direct_planes.end(), [&](const CellPlane& candidate) {
+              return candidate.material == plane.material && on_image_plane(candidate);
+            }))
+          return false;
+        continue;
       }
+    }
+    const bool found = image.any([&](std::uint32_t other) {
+      for (const CellPlane& candidate : surface_.planes(other))
+        if (candidate.material == plane.material && on_image_plane(candidate)) return true;
       return false;
     });
     if (!found) return false;

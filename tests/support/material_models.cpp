@@ -75,6 +75,17 @@ Model painted_wall(int columns, int rows) {
   return model;
 }
 
+Model striped_wall(const std::vector<std::uint32_t>& stripe_materials, const std::vector<std::string>& names) {
+  Model model;
+  for (const std::string& name : names) model.materials.push_back({name, Vec3(0.8, 0.8, 0.8)});
+  const double quarter = kStripedWallWidth / 4.0;
+  for (std::size_t i = 0; i < stripe_materials.size(); ++i)
+    for (int k = 0; k < 4; ++k)
+      add_rectangle(model.mesh, k * quarter, kStripedWallFoot + static_cast<double>(i) * kStripeHeight, (k + 1) * quarter,
+                    kStripedWallFoot + static_cast<double>(i + 1) * kStripeHeight, stripe_materials[i]);
+  return model;
+}
+
 std::uint32_t painted_wall_material_at(const Vec3& p) {
   const double x = p.x() - kPaintedPitchX * std::floor(p.x() / kPaintedPitchX);
   const double y = p.y() - kPaintedPitchY * std::floor(p.y() / kPaintedPitchY);

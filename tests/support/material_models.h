@@ -6,6 +6,8 @@
 #include "geometry/mesh.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace dg::test {
 
@@ -40,6 +42,16 @@ inline constexpr double kPaintedPitchX = 3.0, kPaintedPitchY = 2.0;
 /// each a window [0.75, 2.25] x [0.5, 1.5] (material 1 "glass") framed by wall (material 0
 /// "wall"), drawn as 3 x 3 rectangles of two triangles per cell (welded by cleaning).
 Model painted_wall(int columns, int rows);
+
+/// Height of one stripe of the striped wall, the wall's width and the height of its foot, model
+/// units. The foot keeps stripe borders off the faces of voxels whose size divides 0.5.
+inline constexpr double kStripeHeight = 1.5, kStripedWallWidth = 12.0, kStripedWallFoot = 0.25;
+
+/// A flat wall in z = 0 facing +z, kStripedWallWidth wide, of horizontal stripes kStripeHeight
+/// tall: stripe i spans y from kStripedWallFoot + i kStripeHeight and has material
+/// stripe_materials[i]. The
+/// materials are named `names` (indexed by material), each stripe is four rectangles along x.
+Model striped_wall(const std::vector<std::uint32_t>& stripe_materials, const std::vector<std::string>& names);
 
 /// The painted wall's material around point p: glass inside a cell's window, wall elsewhere.
 /// Periodic in x and y, so it holds for every size.

@@ -24,6 +24,12 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
   command.add_flag("--match-materials", options.prepare.match_materials,
                    "Symmetries must also map each material onto itself; material borders count as feature lines "
                    "(for patterns that exist only in materials, like windows painted on a flat wall)");
+  command
+      .add_option("--same-material", options.prepare.same_materials,
+                  "Materials that count as one when matching, as a comma-separated list of names or * patterns "
+                  "(repeat for more groups; implies --match-materials), e.g. 'glass*,blind1,blind2' for window "
+                  "tints chosen at random")
+      ->allow_extra_args(false);
   command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");
