@@ -396,14 +396,19 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     std::stable_sort(by_power.begin(), by_power.end(), [&](std::size_t a, std::size_t b) {
       return std::abs(family.powers[a]) < std::abs(family.powers[b]);
     });
-    for (std::size_t m : by_power) {
-      const auto direction =
-          grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
-                         options.max_slab_asymmetry);
-      if (!direction) continue;
-      (family.kind == "translation" ? translations : screws).push_back(*direction);
-      break;
-    }
+    auto direction_of = [&](std::size_t m, int min_units) {
+      return grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], min_units,
+                            options.max_slab_asymmetry);
+    };
+    std::optional<GridDirection> direction;
+    for (std::size_t m : by_power)
+      if ((direction = direction_of(m, options.min_repeats))) break;
+    // A translation the model repeats (its powers are symmetries too) whose planes fit only one
+    // unit across the whole model: rooftop structures between the bays of a facade. It can still
+    // join a grid as a direction with one unit, so resizing adds bays where the planes are free.
+    if (!direction && family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)
+      direction = direction_of(by_power.front(), 1);
+    if (direction) (family.kind == "translation" ? translations : screws).push_back(*direction);
   }
   // Most units first; then combine independent translations into one grid.
   // Ties keep a readable order: directions closest to x, then y, then z.
@@ -424,8 +429,10 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     return grid;
   };
   GridRule grid = next_grid();
-  for (const GridDirection& direction : translations)
-    if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions)) grid.directions.push_back(direction);
+  if (!translations.empty() && translations.front().count >= options.min_repeats)
+    for (const GridDirection& direction : translations)
+      if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions))
+        grid.directions.push_back(direction);
   if (!grid.directions.empty()) grids.push_back(std::move(grid));
   // A screw commutes only with motions along its own axis, so each screw is a 1-grid of its own;
   // screws along the same axis (powers of one another, one screw found twice, or an axis the

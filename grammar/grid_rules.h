@@ -53,7 +53,10 @@ struct GridRule {
 };
 
 struct GridOptions {
-  int min_repeats = 2;  ///< a direction needs at least this many units to form a grid
+  /// A grid needs a direction with at least this many units. Further translations may join it
+  /// with a single unit when they repeat in the model (this many powers are symmetries) but
+  /// their planes fit only one unit across it.
+  int min_repeats = 2;
   int max_count = 1000; ///< largest count offered to resize
   /// A slab counts as a copy of the next when at most this fraction of its surface cells lies
   /// outside the symmetric region: absorbs pipeline damage (back-to-back duplicate faces, fins,
@@ -69,7 +72,8 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 
 /// Finds grids from the detected symmetry families. Independent translations are combined into
 /// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
-/// commute); directions that are sums of chosen ones are dropped. Each screw axis gives a
+/// commute); directions that are sums of chosen ones are dropped. The direction with the most
+/// units needs GridOptions::min_repeats of them; the others may have one (see min_repeats). Each screw axis gives a
 /// further 1-grid. Rotations (no slide) give none.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options = {});

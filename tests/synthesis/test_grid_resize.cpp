@@ -7,6 +7,7 @@
 #include "grammar/grammar_file.h"
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"
+#include "support/shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -24,15 +25,30 @@ struct Grammar {
   std::vector<dg::GridPiece> pieces;
 };
 
-Grammar grammar_of(const std::string& name, const nlohmann::json& params) {
+Grammar grammar_of(const dg::TriangleMesh& mesh) {
   dg::Model model;
-  model.mesh = dg::assets::make_asset(name, params).mesh;
+  model.mesh = mesh;
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
   const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
   const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
   REQUIRE(grids.size() == 1);
   Grammar g{prepared.surface.eps(), grids[0], dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps())};
   return g;
+}
+
+Grammar grammar_of(const std::string& name, const nlohmann::json& params) {
+  return grammar_of(dg::assets::make_asset(name, params).mesh);
+}
+
+// The generator's facade(columns, rows) (x from -0.3 to 3 columns + 2.3) with two boxes of
+// different sizes on its roof, over x in [4.2, 7.5] and [13.5, 16.5] + `shift`.
+dg::TriangleMesh facade_with_rooftop_boxes(int columns, int rows, double shift) {
+  dg::TriangleMesh mesh = dg::assets::make_asset("facade", {{"columns", columns}, {"rows", rows}}).mesh;
+  const dg::BoundingBox bounds = mesh.bounds();
+  const double top = bounds.max.z(), front = bounds.min.y() + 0.1, back = bounds.max.y() - 0.1;
+  dg::test::append(mesh, dg::test::make_box(Vec3(4.2, front, top), Vec3(7.5, back, top + 1.5)));
+  dg::test::append(mesh, dg::test::make_box(Vec3(13.5 + shift, front, top), Vec3(16.5 + shift, back, top + 2.0)));
+  return mesh;
 }
 
 std::vector<int> counts_for(const dg::GridRule& grid, const std::vector<std::pair<Vec3, int>>& wanted) {
@@ -67,6 +83,31 @@ TEST_CASE("resize facade(3 x 4) to 5 x 7 gives the generator's facade(5, 7)", "[
   const auto counts = counts_for(g.grid, {{Vec3(3, 0, 0), 5}, {Vec3(0, 0, 3), 7}});
   const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, 1e-6 * g.eps);
   check_same_shape(resized, dg::assets::make_asset("facade", {{"columns", 5}, {"rows", 7}}).mesh, g.eps);
+}
+
+TEST_CASE("facade(5 x 4) with rooftop boxes: one column unit between them, and resizing adds columns there",
+          "[synthesis][grid]") {
+  // A plane across the whole model meets a box, or the image of one under the motion, at every
+  // position but two gaps narrower than the column pitch (3), around x = 0.5 and x = 9, and for
+  // two to four columns (6, 9, 12) no two planes a pitch apart are free either. The columns
+  // repeat (their powers are symmetries), so they join the rows' grid with one unit, in the
+  // wider gap between the boxes.
+  const dg::TriangleMesh exemplar = facade_with_rooftop_boxes(5, 4, 0.0);
+  const Grammar g = grammar_of(exemplar);
+  REQUIRE(g.grid.directions.size() == 2);
+  const auto own = counts_for(g.grid, {{Vec3(3, 0, 0), 1}, {Vec3(0, 0, 3), 4}});
+  for (std::size_t i = 0; i < own.size(); ++i) CHECK(g.grid.directions[i].count == own[i]);
+  const dg::GridDirection& columns = g.grid.directions[own[0] == 1 ? 0 : 1];
+  const double first_x = columns.cut * columns.direction.x();
+  const double second_x = (columns.cut + columns.pitch) * columns.direction.x();
+  CHECK(std::min(first_x, second_x) > 7.5);
+  CHECK(std::max(first_x, second_x) < 13.5);
+  const double weld = dg::kSeamWeldFraction * g.eps;
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, weld), exemplar, g.eps);
+  // Three columns and six rows: the generator's facade with the first box where it stood and
+  // the second two columns further on (both on a roof two rows higher).
+  const auto larger = counts_for(g.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 6}});
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, larger, weld), facade_with_rooftop_boxes(7, 6, 6.0), g.eps);
 }
 
 // A screw grid (spiral stairs): every added unit is the screw motion applied once more.
@@ -213,6 +254,10 @@ TEST_CASE("resize CLI: unknown grid or count out of range exits 2 and writes not
   CHECK_FALSE(std::filesystem::exists(out));
   CHECK(status_of("--grid grid1=6") == 0);
   CHECK(std::filesystem::exists(out));
+  // A missing output folder is created, as generate and analyze do.
+  const std::filesystem::path nested = folder / "new" / "folder" / "wide.obj";
+  CHECK(dg::test::run_cli("resize " + fence.grammar.string() + " --grid grid1=6 -o " + nested.string(), folder).status == 0);
+  CHECK(std::filesystem::exists(nested));
   std::filesystem::remove_all(folder);
 }
 

@@ -197,8 +197,9 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
     for (const GridDirection& d : grid.rule.directions)
-      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} units, first cut at {:.6g}{}\n", grid_motion_text(d),
-                         vec(d.direction), d.pitch, d.count, d.cut, kept_units_text(d));
+      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}\n",
+                         grid_motion_text(d), vec(d.direction), d.pitch, d.count, d.count == 1 ? "" : "s", d.cut,
+                         kept_units_text(d));
   }
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
@@ -286,6 +287,13 @@ void write_analysis_report(const AnalysisReport& report) {
       md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d), d.pitch, d.count, d.cut,
                         d.head_units + 1, kept_units_text(d));
     }
+    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
+      if (grid.rule.directions[i].count == 1)
+        md += fmt::format(
+            "\nDirection {} has one unit: its motion repeats across the model (its multiples are symmetries too), "
+            "but planes across the whole model fit only one unit, because other parts (such as structures on a roof) "
+            "lie across the rest. Resizing adds units at that place.\n",
+            i + 1);
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
     for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
     std::string ranges;
