@@ -43,6 +43,8 @@ struct PreparedModel {
   /// The surface keeps materials apart and material borders are feature edges
   /// (PrepareOptions::match_materials on a mesh with materials).
   bool materials_matched = false;
+  /// With materials_matched: the matching class of each material (material_classes()).
+  std::vector<std::uint32_t> material_classes;
   std::vector<StageTiming> timings;  ///< load, clean, feature lines, voxel surface
 };
 

@@ -10,7 +10,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 using dg::Vec3;
@@ -135,4 +137,42 @@ TEST_CASE("materials: analyze and resize an OBJ + MTL with painted windows, read
     if (material.name == "glass") glass += 0.5 * wide.mesh.area_vector(t).norm();
   }
   CHECK(glass == Approx((counts[0] + 1) * (counts[1] + 1) * 1.5).epsilon(1e-9));
+}
+
+TEST_CASE("materials: --same-material makes random tints one material for info and analyze", "[tools][materials]") {
+  // Wall stripes between glass stripes of two tints in no periodic order: with the tints as one
+  // material the stripes repeat every two (3.0), and the report and JSON name the group.
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-same-material-test");
+  std::vector<std::uint32_t> stripes;
+  for (std::uint32_t tint : {1, 2, 2, 1, 1, 2, 1, 2, 2, 1}) stripes.insert(stripes.end(), {0u, tint});
+  const dg::Model wall = dg::test::striped_wall(stripes, {"wall", "glass_green", "glass_blue"});
+  dg::write_mesh_with_materials(folder / "stripes.obj", wall.mesh, wall.materials);
+  const std::string model = (folder / "stripes.obj").string();
+
+  const dg::test::CliRun info = dg::test::run_cli("info " + model + " --json --same-material 'glass_*'", folder);
+  REQUIRE(info.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(info.output);
+  const nlohmann::json tints = nlohmann::json::array({nlohmann::json::array({"glass_green", "glass_blue"})});
+  CHECK(summary["match_materials"] == true);
+  CHECK(summary["material_groups"] == tints);
+
+  const dg::test::CliRun analyze =
+      dg::test::run_cli("analyze " + model + " --json -q --same-material 'glass_*' -o " + (folder / "out").string(), folder);
+  REQUIRE(analyze.status == 0);
+  const nlohmann::json result = nlohmann::json::parse(analyze.output);
+  CHECK(result["material_groups"] == tints);
+  REQUIRE(result["grids"].size() == 1);
+  bool two_stripes = false;
+  for (const nlohmann::json& t : result["grids"][0]["transforms"])
+    two_stripes = two_stripes || std::abs(std::abs(t[1][3].get<double>()) - 2 * dg::test::kStripeHeight) < 1e-6;
+  CHECK(two_stripes);
+  std::ifstream report(folder / "out" / "stripes.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("`glass_green`, `glass_blue` count as one") != std::string::npos);
+
+  const dg::test::CliRun unknown = dg::test::run_cli("info " + model + " --same-material 'glas,wall'", folder);
+  CHECK(unknown.status == 2);
+  CHECK(unknown.output.find("no material matches 'glas' (the model's materials: wall, glass_green, glass_blue)") !=
+        std::string::npos);
+  std::filesystem::remove_all(folder);
 }

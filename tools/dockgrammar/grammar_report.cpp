@@ -180,10 +180,19 @@ std::string materials_paragraph(const PreparedModel& prepared) {
   if (materials.empty()) return "";
   std::string names;
   for (const Material& m : materials) names += fmt::format("{}`{}`", names.empty() ? "" : ", ", m.name);
-  return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries {} (`--match-materials`).\n\n",
-                     materials.size(), names,
-                     prepared.materials_matched ? "map every material onto itself and material borders are feature lines"
-                                                : "are geometric; materials need not match");
+  if (!prepared.materials_matched)
+    return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries are geometric; materials need not "
+                       "match (`--match-materials`).\n\n",
+                       materials.size(), names);
+  std::string groups;
+  for (const std::vector<std::string>& group : material_groups(prepared)) {
+    std::string members;
+    for (const std::string& name : group) members += fmt::format("{}`{}`", members.empty() ? "" : ", ", name);
+    groups += fmt::format(" {} count as one (`--same-material`).", members);
+  }
+  return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries map every material onto itself and "
+                     "borders between materials are feature lines (`--match-materials`).{}\n\n",
+                     materials.size(), names, groups);
 }
 
 }  // namespace
@@ -250,6 +259,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"eps", report.prepared.surface.eps()},
           {"materials", material_names(report.prepared.model.materials)},
           {"match_materials", report.prepared.materials_matched},
+          {"material_groups", material_groups(report.prepared)},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},
           {"docking_sites", docking_sites_json(report)},

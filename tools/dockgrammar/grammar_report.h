@@ -30,8 +30,9 @@ struct AnalysisReport {
 /// Short readable summary for stdout.
 std::string analysis_text(const AnalysisReport& report);
 
-/// {r, eps, materials (names), match_materials, symmetries, families, docking_sites, dockers, operations, nonterminals, productions,
-/// grids: [{name, dims, counts, transforms, count_range, pieces}], grammar_file, timings_s, missing}.
+/// {r, eps, materials (names), match_materials, material_groups, symmetries, families,
+/// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,
+/// transforms, count_range, pieces}], grammar_file, timings_s, missing}.
 nlohmann::json analysis_json(const AnalysisReport& report);
 
 /// report.report_path (NAME.report.md): cleaning, symmetries, grids with counts and pieces,

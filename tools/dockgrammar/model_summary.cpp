@@ -18,6 +18,29 @@ std::string materials_text(const std::vector<Material>& materials) {
 
 }  // namespace
 
+std::vector<std::vector<std::string>> material_groups(const PreparedModel& prepared) {
+  std::vector<std::vector<std::string>> groups;
+  const std::vector<std::uint32_t>& classes = prepared.material_classes;
+  for (std::uint32_t m = 0; m < classes.size(); ++m) {
+    if (classes[m] != m) continue;  // the first material of each class opens it
+    std::vector<std::string> names;
+    for (std::uint32_t other = m; other < classes.size(); ++other)
+      if (classes[other] == m) names.push_back(prepared.model.materials[other].name);
+    if (names.size() > 1) groups.push_back(std::move(names));
+  }
+  return groups;
+}
+
+std::string materials_matching_text(const PreparedModel& prepared) {
+  std::string text = "symmetries map each material onto itself";
+  for (const std::vector<std::string>& group : material_groups(prepared)) {
+    std::string names;
+    for (const std::string& name : group) names += (names.empty() ? "" : ", ") + name;
+    text += fmt::format("; {} count as one", names);
+  }
+  return text;
+}
+
 std::string summary_text(const PreparedModel& prepared) {
   const CleaningReport& c = prepared.cleaning;
   const VoxelSurfaceStats stats = prepared.surface.stats();
@@ -36,6 +59,7 @@ std::string summary_text(const PreparedModel& prepared) {
                               c.boundary_edges, c.non_manifold_edges, c.inconsistent_edges, c.t_junctions_split));
     line("components", fmt::format("{}{}", c.components, c.closed_and_oriented ? " (closed, consistently oriented)" : ""));
     line("materials", materials_text(prepared.model.materials));
+    if (prepared.materials_matched) line("matching", materials_matching_text(prepared));
   }
   line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
                              format_vector(c.bounds.size())));
@@ -64,6 +88,8 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
   return {{"model", prepared.model.source_path},
           {"cleaning", to_json(prepared.cleaning)},
           {"materials", material_names(prepared.model.materials)},
+          {"match_materials", prepared.materials_matched},
+          {"material_groups", material_groups(prepared)},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},
           {"voxel_surface",

@@ -12,10 +12,19 @@ namespace dg::cli {
 /// Aligned text report: cleaning, r/eps, voxel surface, feature lines, timings.
 std::string summary_text(const PreparedModel& prepared);
 
-/// The same as JSON: {model, cleaning, materials, r, eps, voxel_surface, feature_lines, timings_s}.
+/// The same as JSON: {model, cleaning, materials, match_materials, material_groups (arrays of
+/// names), r, eps, voxel_surface, feature_lines, timings_s}.
 nlohmann::json summary_json(const PreparedModel& prepared);
 
 /// The materials' names as a JSON array, in index order.
 nlohmann::json material_names(const std::vector<Material>& materials);
+
+/// The groups of materials that match one another (classes of two or more materials, see
+/// PreparedModel::material_classes), each as its material names in model order.
+std::vector<std::vector<std::string>> material_groups(const PreparedModel& prepared);
+
+/// How symmetries treat materials when they are matched: "symmetries map each material onto
+/// itself", then "; A, B count as one" per group.
+std::string materials_matching_text(const PreparedModel& prepared);
 
 }  // namespace dg::cli
