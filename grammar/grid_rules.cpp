@@ -386,6 +386,7 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   std::vector<GridRule> grids;
   if (prepared.model.is_point_cloud()) return grids;
   std::vector<GridDirection> translations, screws;
+  std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
   for (const SymmetryFamily& family : symmetries.families) {
     if (family.kind != "translation" && family.kind != "screw") continue;
     // The generator first, then its powers until one gives a direction: a generator can be a
@@ -403,12 +404,10 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     std::optional<GridDirection> direction;
     for (std::size_t m : by_power)
       if ((direction = direction_of(m, options.min_repeats))) break;
-    // A translation the model repeats (its powers are symmetries too) whose planes fit only one
-    // unit across the whole model: rooftop structures between the bays of a facade. It can still
-    // join a grid as a direction with one unit, so resizing adds bays where the planes are free.
-    if (!direction && family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)
-      direction = direction_of(by_power.front(), 1);
-    if (direction) (family.kind == "translation" ? translations : screws).push_back(*direction);
+    if (direction)
+      (family.kind == "translation" ? translations : screws).push_back(*direction);
+    else if (family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)
+      repeated_generators.push_back(family.members[by_power.front()]);
   }
   // Most units first; then combine independent translations into one grid.
   // Ties keep a readable order: directions closest to x, then y, then z.
@@ -429,10 +428,19 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     return grid;
   };
   GridRule grid = next_grid();
-  if (!translations.empty() && translations.front().count >= options.min_repeats)
-    for (const GridDirection& direction : translations)
-      if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions))
-        grid.directions.push_back(direction);
+  for (const GridDirection& direction : translations)
+    if (grid.directions.size() < 3 && independent_of(direction.translation, grid.directions)) grid.directions.push_back(direction);
+  // A translation the model repeats (as many of its powers are symmetries) whose planes fit only
+  // one unit across the whole model, because of parts such as rooftop structures between the bays
+  // of a facade, joins a grid that exists as a direction with one unit: resizing adds bays where
+  // the planes are free.
+  for (std::size_t s : repeated_generators) {
+    if (grid.directions.empty() || grid.directions.size() >= 3 ||
+        !independent_of(symmetries.symmetries[s].transform.translation, grid.directions))
+      continue;
+    if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry))
+      grid.directions.push_back(*direction);
+  }
   if (!grid.directions.empty()) grids.push_back(std::move(grid));
   // A screw commutes only with motions along its own axis, so each screw is a 1-grid of its own;
   // screws along the same axis (powers of one another, one screw found twice, or an axis the
