@@ -195,13 +195,23 @@ std::string materials_paragraph(const PreparedModel& prepared) {
                      materials.size(), names, groups);
 }
 
+// For a model with materials analysed by geometry alone: where to look when repeats exist only in
+// materials (empty otherwise). `quote` encloses option names (a backtick in Markdown).
+std::string materials_hint(const PreparedModel& prepared, std::string_view quote = "") {
+  if (prepared.materials_matched || prepared.model.materials.size() < 2) return "";
+  return fmt::format(
+      "; the model has materials: for windows or panels drawn only in materials on flat walls, try "
+      "{0}--match-materials{0}, with {0}--same-material{0} for tints that vary at random",
+      quote);
+}
+
 }  // namespace
 
 std::string analysis_text(const AnalysisReport& report) {
   std::string out = fmt::format("model {}: r = {:.6g}, eps = {:.6g}\n", report.prepared.model.source_path,
                                 report.prepared.surface.r(), report.prepared.surface.eps());
   out += fmt::format("symmetries: {} in {} families\n", report.symmetries.symmetries.size(), report.symmetries.families.size());
-  if (report.grammar.grids.empty()) out += "grids: none found\n";
+  if (report.grammar.grids.empty()) out += fmt::format("grids: none found{}\n", materials_hint(report.prepared));
   for (const GridWithPieces& grid : report.grammar.grids) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
@@ -287,7 +297,11 @@ void write_analysis_report(const AnalysisReport& report) {
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
   md += "```\n\n## Grid rules\n\n";
-  if (report.grammar.grids.empty()) md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric area).\n\n";
+  if (report.grammar.grids.empty())
+    md += fmt::format(
+        "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
+        "area){}.\n\n",
+        materials_hint(report.prepared, "`"));
   for (const GridWithPieces& grid : report.grammar.grids) {
     md += fmt::format(
         "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",
