@@ -45,6 +45,9 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   voxel_options.r = options.r;
   voxel_options.eps = options.eps;
   try {
+    // Groups are checked against the model's materials even when it has none (a clear error).
+    if (matching_materials && (model.mesh.has_materials() || !options.same_materials.empty()))
+      voxel_options.material_classes = material_classes(model.materials, options.same_materials);
     if (model.is_point_cloud()) {
       prepared.cleaning = clean_point_cloud(model.cloud);
       prepared.timings.push_back({"clean", clock.lap()});
@@ -60,8 +63,6 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
             resolve_t_junctions(model.mesh, kTJunctionTolerance * model.mesh.bounds().diagonal());
       prepared.timings.push_back({"clean", clock.lap()});
       report_progress(progress, "feature lines", 0.0);
-      if (matching_materials && model.mesh.has_materials())
-        voxel_options.material_classes = material_classes(model.materials, options.same_materials);
       prepared.feature_edges =
           find_feature_edges(model.mesh, options.sharp_angle_degrees, voxel_options.material_classes);
       const double r = options.r > 0.0 ? options.r : default_radius(model.mesh.bounds());

@@ -93,4 +93,5 @@ TEST_CASE("material classes: '*' patterns, groups and clear errors", "[geometry]
   CHECK_THROWS_WITH(dg::material_classes(materials, {"glas*", "glas1,weiss"}),
                     Catch::Contains("'glas1' is in two --same-material groups"));
   CHECK_THROWS_AS(dg::material_classes(materials, {" , "}), dg::InputError);
+  CHECK_THROWS_WITH(dg::material_classes({}, {"glas*"}), Catch::Contains("(the model's materials: none)"));
 }

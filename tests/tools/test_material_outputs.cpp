@@ -184,5 +184,12 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   CHECK(unknown.status == 2);
   CHECK(unknown.output.find("no material matches 'glas' (the model's materials: wall, glass_green, glass_blue)") !=
         std::string::npos);
+  // A model without materials has nothing to group.
+  const dg::test::CliRun bare = dg::test::run_cli(
+      "info " + (std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets" / "models" / "fence_4.obj").string() +
+          " --same-material glass",
+      folder);
+  CHECK(bare.status == 2);
+  CHECK(bare.output.find("no material matches 'glass' (the model's materials: none)") != std::string::npos);
   std::filesystem::remove_all(folder);
 }
