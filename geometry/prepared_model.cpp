@@ -76,8 +76,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   } catch (const InputError& e) {
     throw InputError(name + ": " + e.what());
   }
-  prepared.materials_matched = matching_materials && model.mesh.has_materials();
-  prepared.material_classes = voxel_options.material_classes;
+  prepared.material_classes = std::move(voxel_options.material_classes);
   prepared.model = std::move(model);
   return prepared;
 }

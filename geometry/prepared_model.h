@@ -40,12 +40,14 @@ struct PreparedModel {
   std::vector<FeatureEdge> feature_edges;  ///< empty for point clouds
   FeatureLines feature_lines;              ///< empty for point clouds
   VoxelSurface surface;
-  /// The surface keeps materials apart and material borders are feature edges
-  /// (PrepareOptions::match_materials on a mesh with materials).
-  bool materials_matched = false;
-  /// With materials_matched: the matching class of each material (material_classes()).
+  /// Empty when materials are not matched; else the matching class of each material
+  /// (material_classes()), as the voxel surface and the feature edges used them.
   std::vector<std::uint32_t> material_classes;
   std::vector<StageTiming> timings;  ///< load, clean, feature lines, voxel surface
+
+  /// The surface keeps materials apart and material borders are feature edges
+  /// (PrepareOptions::match_materials or same_materials on a mesh with materials).
+  bool materials_matched() const { return !material_classes.empty() && model.mesh.has_materials(); }
 };
 
 /// Loads, cleans (then splits open edges at T-junction vertices within 1e-9 of the bounding-box

@@ -397,13 +397,12 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     std::stable_sort(by_power.begin(), by_power.end(), [&](std::size_t a, std::size_t b) {
       return std::abs(family.powers[a]) < std::abs(family.powers[b]);
     });
-    auto direction_of = [&](std::size_t m, int min_units) {
-      return grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], min_units,
-                            options.max_slab_asymmetry);
-    };
     std::optional<GridDirection> direction;
-    for (std::size_t m : by_power)
-      if ((direction = direction_of(m, options.min_repeats))) break;
+    for (std::size_t m : by_power) {
+      direction = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m],
+                                 options.min_repeats, options.max_slab_asymmetry);
+      if (direction) break;
+    }
     if (direction)
       (family.kind == "translation" ? translations : screws).push_back(*direction);
     else if (family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)

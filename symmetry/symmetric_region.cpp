@@ -98,27 +98,27 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
       return std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
              std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_;
     };
-    // A cell with one material on this plane lies inside a painted area, not on its border, so the
-    // voxel holding its image decides alone when it holds the plane: a neighbour of another colour
-    // may not stand in for it (else a strip three voxels wide would match its shifted copy).
-    const bool inside_one_material = std::none_of(planes.begin(), planes.end(), [&](const CellPlane& other) {
-      return other.material != plane.material && std::abs(other.normal.dot(plane.normal)) > cos_tolerance_ &&
-             std::abs(other.normal.dot(source_foot) - other.offset) < offset_tolerance_;
-    });
-    if (const std::optional<std::uint32_t> direct = image.direct(); direct && inside_one_material) {
+    auto of_its_material = [&](const CellPlane& candidate) {
+      return candidate.material == plane.material && on_image_plane(candidate);
+    };
+    if (const std::optional<std::uint32_t> direct = image.direct()) {
       const std::span<const CellPlane> direct_planes = surface_.planes(*direct);
-      if (std::any_of(direct_planes.begin(), direct_planes.end(), on_image_plane)) {
-        if (std::none_of(direct_planes.begin(), direct_planes.end(), [&](const CellPlane& candidate) {
-              return candidate.material == plane.material && on_image_plane(candidate);
-            }))
-          return false;
-        continue;
-      }
+      if (std::any_of(direct_planes.begin(), direct_planes.end(), of_its_material)) continue;
+      // The image voxel may hold the plane in other materials only (never without materials, where
+      // all are 0). Then a cell with one material on this plane lies inside a painted area, not on
+      // its border, and that voxel decides alone: a neighbour of the right colour may not stand in
+      // for it (else a strip three voxels wide would match its shifted copy).
+      auto inside_one_material = [&] {
+        return std::none_of(planes.begin(), planes.end(), [&](const CellPlane& other) {
+          return other.material != plane.material && std::abs(other.normal.dot(plane.normal)) > cos_tolerance_ &&
+                 std::abs(other.normal.dot(source_foot) - other.offset) < offset_tolerance_;
+        });
+      };
+      if (std::any_of(direct_planes.begin(), direct_planes.end(), on_image_plane) && inside_one_material()) return false;
     }
     const bool found = image.any([&](std::uint32_t other) {
-      for (const CellPlane& candidate : surface_.planes(other))
-        if (candidate.material == plane.material && on_image_plane(candidate)) return true;
-      return false;
+      const std::span<const CellPlane> candidates = surface_.planes(other);
+      return std::any_of(candidates.begin(), candidates.end(), of_its_material);
     });
     if (!found) return false;
   }

@@ -66,7 +66,7 @@ TEST_CASE("striped wall: glass stripes of two tints repeat when the tints are on
   grouped_options.match_materials = false;  // implied by the group
   grouped_options.same_materials = {"glass_*"};
   const dg::PreparedModel grouped = dg::prepare_model(dg::test::striped_wall(stripes, names), grouped_options);
-  CHECK(grouped.materials_matched);
+  CHECK(grouped.materials_matched());
   // 6 of the 9 glass stripes that slide onto glass change tint, so a third of the cells fail.
   CHECK(symmetric_fraction(tinted, pitch) < 0.7);
   CHECK(symmetric_fraction(grouped, pitch) > 0.8);

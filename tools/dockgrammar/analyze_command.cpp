@@ -4,6 +4,7 @@
 #include "tools/dockgrammar/commands.h"
 #include "tools/dockgrammar/grammar_report.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
 #include "geometry/stopwatch.h"
@@ -69,9 +70,7 @@ void add_analyze_command(CLI::App& app) {
     grammar_timings.push_back({"context-free rules", stopwatch.lap()});
 
     const std::filesystem::path folder(options->output);
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw InputError(folder.string() + ": cannot create the output folder");
+    create_output_folder(folder);
     std::string stem = std::filesystem::path(options->model.model_path).stem().string();
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);

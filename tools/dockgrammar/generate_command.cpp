@@ -9,6 +9,7 @@
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/number_checks.h"
+#include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 #include "synthesis/variants.h"
 
@@ -76,9 +77,7 @@ void add_generate_command(CLI::App& app) {
     const auto threads = limit_threads(options->threads);
     const ShapeGrammar grammar = read_grammar(options->grammar);
     const std::filesystem::path folder(options->output);
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw InputError(folder.string() + ": cannot create the output folder");
+    create_output_folder(folder);
     VariantOptions variant_options;
     variant_options.range_factor = options->range_factor;
     variant_options.rules = options->rules == "grid"           ? VariantRules::grid

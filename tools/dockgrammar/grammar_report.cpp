@@ -180,16 +180,13 @@ std::string materials_paragraph(const PreparedModel& prepared) {
   if (materials.empty()) return "";
   std::string names;
   for (const Material& m : materials) names += fmt::format("{}`{}`", names.empty() ? "" : ", ", m.name);
-  if (!prepared.materials_matched)
+  if (!prepared.materials_matched())
     return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries are geometric; materials need not "
                        "match (`--match-materials`).\n\n",
                        materials.size(), names);
   std::string groups;
-  for (const std::vector<std::string>& group : material_groups(prepared)) {
-    std::string members;
-    for (const std::string& name : group) members += fmt::format("{}`{}`", members.empty() ? "" : ", ", name);
-    groups += fmt::format(" {} count as one (`--same-material`).", members);
-  }
+  for (const std::vector<std::string>& group : material_groups(prepared))
+    groups += fmt::format(" `{}` count as one (`--same-material`).", fmt::join(group, "`, `"));
   return fmt::format("Materials ({}): {}. They are kept on every piece. Symmetries map every material onto itself and "
                      "borders between materials are feature lines (`--match-materials`).{}\n\n",
                      materials.size(), names, groups);
@@ -198,7 +195,7 @@ std::string materials_paragraph(const PreparedModel& prepared) {
 // For a model with materials analysed by geometry alone: where to look when repeats exist only in
 // materials (empty otherwise). `quote` encloses option names (a backtick in Markdown).
 std::string materials_hint(const PreparedModel& prepared, std::string_view quote = "") {
-  if (prepared.materials_matched || prepared.model.materials.size() < 2) return "";
+  if (prepared.materials_matched() || prepared.model.materials.size() < 2) return "";
   return fmt::format(
       "; the model has materials: for windows or panels drawn only in materials on flat walls, try "
       "{0}--match-materials{0}, with {0}--same-material{0} for tints that vary at random",
@@ -268,7 +265,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
           {"materials", material_names(report.prepared.model.materials)},
-          {"match_materials", report.prepared.materials_matched},
+          {"match_materials", report.prepared.materials_matched()},
           {"material_groups", material_groups(report.prepared)},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},

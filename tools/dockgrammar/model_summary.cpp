@@ -31,16 +31,6 @@ std::vector<std::vector<std::string>> material_groups(const PreparedModel& prepa
   return groups;
 }
 
-std::string materials_matching_text(const PreparedModel& prepared) {
-  std::string text = "symmetries map each material onto itself";
-  for (const std::vector<std::string>& group : material_groups(prepared)) {
-    std::string names;
-    for (const std::string& name : group) names += (names.empty() ? "" : ", ") + name;
-    text += fmt::format("; {} count as one", names);
-  }
-  return text;
-}
-
 std::string summary_text(const PreparedModel& prepared) {
   const CleaningReport& c = prepared.cleaning;
   const VoxelSurfaceStats stats = prepared.surface.stats();
@@ -59,7 +49,12 @@ std::string summary_text(const PreparedModel& prepared) {
                               c.boundary_edges, c.non_manifold_edges, c.inconsistent_edges, c.t_junctions_split));
     line("components", fmt::format("{}{}", c.components, c.closed_and_oriented ? " (closed, consistently oriented)" : ""));
     line("materials", materials_text(prepared.model.materials));
-    if (prepared.materials_matched) line("matching", materials_matching_text(prepared));
+    if (prepared.materials_matched()) {
+      std::string matching = "symmetries map each material onto itself";
+      for (const std::vector<std::string>& group : material_groups(prepared))
+        matching += fmt::format("; {} count as one", fmt::join(group, ", "));
+      line("matching", matching);
+    }
   }
   line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
                              format_vector(c.bounds.size())));
@@ -88,7 +83,7 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
   return {{"model", prepared.model.source_path},
           {"cleaning", to_json(prepared.cleaning)},
           {"materials", material_names(prepared.model.materials)},
-          {"match_materials", prepared.materials_matched},
+          {"match_materials", prepared.materials_matched()},
           {"material_groups", material_groups(prepared)},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},

@@ -23,8 +23,4 @@ nlohmann::json material_names(const std::vector<Material>& materials);
 /// PreparedModel::material_classes), each as its material names in model order.
 std::vector<std::vector<std::string>> material_groups(const PreparedModel& prepared);
 
-/// How symmetries treat materials when they are matched: "symmetries map each material onto
-/// itself", then "; A, B count as one" per group.
-std::string materials_matching_text(const PreparedModel& prepared);
-
 }  // namespace dg::cli

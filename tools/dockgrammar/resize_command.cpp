@@ -6,6 +6,7 @@
 #include "geometry/model_io.h"
 #include "grammar/grammar_file.h"
 #include "synthesis/grid_resize.h"
+#include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
 #include <fmt/core.h>
@@ -76,10 +77,7 @@ void add_resize_command(CLI::App& app) {
     const GridWithPieces& grid = grammar.grids.front();
     const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name),
                                             kSeamWeldFraction * grammar.eps);
-    const std::filesystem::path folder = std::filesystem::path(options->output).parent_path();
-    std::error_code error;
-    if (!folder.empty()) std::filesystem::create_directories(folder, error);
-    if (error) throw InputError(folder.string() + ": cannot create the output folder");
+    create_output_folder(std::filesystem::path(options->output).parent_path());
     write_mesh_with_materials(options->output, result, grammar.materials);
     if (options->picture)
       write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result,

@@ -3,6 +3,7 @@
 #include "geometry/cell_pieces.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
 #include <fmt/format.h>
@@ -113,9 +114,7 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
 void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
                              const SymmetryResult& result, std::size_t top, const std::string& up_axis) {
   if (prepared.model.is_point_cloud()) throw InputError("-o pictures are made for meshes only (this model is a point cloud)");
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw InputError(folder.string() + ": cannot create the output folder");
+  create_output_folder(folder);
   const VoxelSurface& surface = prepared.surface;
   std::vector<std::uint32_t> piece_cells;
   const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
