@@ -44,6 +44,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
   VoxelSurfaceOptions voxel_options;
   voxel_options.r = options.r;
   voxel_options.eps = options.eps;
+  voxel_options.corner_angle_degrees = options.corner_angle_degrees;
   try {
     // Groups are checked against the model's materials even when it has none (a clear error).
     if (matching_materials && (model.mesh.has_materials() || !options.same_materials.empty()))

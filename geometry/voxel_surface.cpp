@@ -4,6 +4,7 @@
 #include "geometry/cloud_cell_geometry.h"
 #include "geometry/clip_polygon.h"
 #include "geometry/errors.h"
+#include "geometry/tessellation_bend.h"
 
 #include <fmt/format.h>
 #include <openvdb/openvdb.h>
@@ -265,10 +266,12 @@ void merge_planes(std::span<const std::uint32_t> triangles, const std::vector<We
     for (std::size_t m = 0; m < out.size(); ++m) {
       if (out[m].material == p.plane.material && out[m].normal.dot(p.plane.normal) > cos_tolerance &&
           std::abs(out[m].offset - p.plane.offset) < offset_tolerance) {
+        const double bend = std::max(out[m].bend_degrees, p.plane.bend_degrees);
         if (p.weight > weights[m]) {
           out[m] = p.plane;
           weights[m] = p.weight;
         }
+        out[m].bend_degrees = bend;
         merged = true;
         break;
       }
@@ -297,6 +300,7 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
   builder.set_triangles(triangle_items);
 
   report_progress(progress, "cell planes", 0.4);
+  const std::vector<double> bends = triangle_bend_degrees(mesh, features);
   std::vector<WeightedPlane> triangle_planes(mesh.triangles.size());
   tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
     const Vec3 n = mesh.area_vector(t);
@@ -305,7 +309,7 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
     const Vec3 unit = n / length;
     const std::uint32_t material =
         !options.material_classes.empty() && mesh.has_materials() ? options.material_classes[mesh.materials[t]] : 0;
-    triangle_planes[t] = {{unit, unit.dot(mesh.positions[mesh.triangles[t][0]]), material}, 0.5 * length};
+    triangle_planes[t] = {{unit, unit.dot(mesh.positions[mesh.triangles[t][0]]), material, bends[t]}, 0.5 * length};
   });
   const double cos_tolerance = std::cos(options.plane_merge_angle_degrees * std::numbers::pi / 180.0);
   const double offset_tolerance = options.plane_merge_offset * eps;
@@ -332,25 +336,28 @@ VoxelSurface build_voxel_surface(const TriangleMesh& mesh, const std::vector<Fea
     const Vec3& b = mesh.positions[features[e].v1];
     if (a != b) voxelize(a, b, b, eps, e, out);
   });
+  const std::vector<double> edge_bends = feature_edge_bend_degrees(mesh, features, options.corner_angle_degrees);
   std::vector<std::uint32_t> edge_offsets, edge_ids;
   fill_csr(builder.keys(), edge_items, edge_offsets, edge_ids);
   builder.set_lines([&](std::uint32_t cell, std::vector<CellLine>& out) {
     const Vec3 centre = surface.centre(cell);
     for (std::uint32_t n = edge_offsets[cell]; n < edge_offsets[cell + 1]; ++n) {
       const FeatureEdge& edge = features[edge_ids[n]];
+      const double bend = edge_bends[edge_ids[n]];
       const Vec3& a = mesh.positions[edge.v0];
       const Vec3 direction = (mesh.positions[edge.v1] - a).normalized();
       const Vec3 point = a + (centre - a).dot(direction) * direction;  // closest to the cell centre
       bool merged = false;
-      for (const CellLine& line : out) {
+      for (CellLine& line : out) {
         const Vec3 offset = point - line.point;
         if (std::abs(line.direction.dot(direction)) > cos_tolerance &&
             (offset - offset.dot(line.direction) * line.direction).norm() < offset_tolerance && line.kind == edge.kind) {
+          line.bend_degrees = std::max(line.bend_degrees, bend);
           merged = true;
           break;
         }
       }
-      if (!merged) out.push_back({point, direction, edge.kind});
+      if (!merged) out.push_back({point, direction, edge.kind, bend});
     }
   });
 

@@ -8,6 +8,7 @@
 // voxels on both sides. Cells are numbered in lexicographic (i, j, k) order.
 
 #include "geometry/feature_edges.h"
+#include "geometry/feature_lines.h"
 #include "geometry/mesh.h"
 #include "geometry/progress.h"
 
@@ -26,17 +27,22 @@ using VoxelCoord = std::array<std::int32_t, 3>;
 /// `material` is the material index of the triangles on it (0 when the mesh has none or the
 /// surface was built without VoxelSurfaceOptions::separate_materials): planes of different
 /// materials stay apart, so symmetry must map each material onto itself.
+/// `bend_degrees` is how far the surface turns from its triangles to their smooth neighbours
+/// (tessellation_bend.h): 0 on flat geometry, the tessellation step on a faceted curve.
 struct CellPlane {
   Vec3 normal = Vec3::UnitZ();
   double offset = 0.0;
   std::uint32_t material = 0;
+  double bend_degrees = 0.0;
 };
 
 /// Infinite line through `point` with unit `direction`, from a feature or boundary edge.
+/// `bend_degrees`: how far the feature polyline turns at the ends of its edges (0 when straight).
 struct CellLine {
   Vec3 point = Vec3::Zero();
   Vec3 direction = Vec3::UnitX();
   EdgeKind kind = EdgeKind::sharp;
+  double bend_degrees = 0.0;
 };
 
 /// Radius r from paper 001: 1.6 % of the longest bounding-box side.
@@ -49,6 +55,9 @@ struct VoxelSurfaceOptions {
   double plane_merge_angle_degrees = 1.0;
   /// ... and their offsets differ by less than this fraction of eps.
   double plane_merge_offset = 0.05;
+  /// Feature polylines turning by less than this at a vertex tessellate a curve, and their edges
+  /// get a bend (CellLine::bend_degrees); larger turns are corners.
+  double corner_angle_degrees = kDefaultCornerAngleDegrees;
   /// Empty: every cell plane has material 0. Else the matching class of each material index
   /// (material_classes()): cell planes keep the class of their triangles (CellPlane::material).
   std::vector<std::uint32_t> material_classes;

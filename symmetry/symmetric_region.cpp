@@ -12,7 +12,21 @@ CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, c
     : surface_(surface),
       cos_tolerance_(std::cos((cloud ? options.cloud_angle_tolerance_degrees : options.angle_tolerance_degrees) *
                               std::numbers::pi / 180.0)),
-      offset_tolerance_((cloud ? options.cloud_offset_tolerance_eps : options.offset_tolerance_eps) * surface.eps()) {}
+      offset_tolerance_((cloud ? options.cloud_offset_tolerance_eps : options.offset_tolerance_eps) * surface.eps()),
+      angle_tolerance_degrees_(options.angle_tolerance_degrees),
+      max_bend_degrees_(options.max_bend_degrees),
+      curved_deviation_(options.curved_deviation_eps * surface.eps()),
+      exact_only_(cloud != nullptr) {}
+
+bool CellMatcher::on_same_geometry(const Vec3& a, const Vec3& b, double distance, double bend_degrees) const {
+  const double cos_angle = std::min(1.0, std::abs(a.dot(b)));
+  if (cos_angle > cos_tolerance_ && distance < offset_tolerance_) return true;
+  if (exact_only_ || bend_degrees <= angle_tolerance_degrees_) return false;
+  const double allowed = std::min(angle_tolerance_degrees_ + bend_degrees, max_bend_degrees_) * std::numbers::pi / 180.0;
+  if (cos_angle < std::cos(allowed)) return false;
+  const double half_diagonal = 0.5 * std::sqrt(3.0) * surface_.eps();
+  return distance + half_diagonal * std::sqrt(1.0 - cos_angle * cos_angle) < curved_deviation_;
+}
 
 std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p) {
   const VoxelCoord v = surface.voxel_of(p);
@@ -95,8 +109,8 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
     const Vec3 foot = t.apply(source_foot);
     const Vec3 normal = t.apply_direction(plane.normal);
     auto on_image_plane = [&](const CellPlane& candidate) {
-      return std::abs(candidate.normal.dot(normal)) > cos_tolerance_ &&
-             std::abs(candidate.normal.dot(foot) - candidate.offset) < offset_tolerance_;
+      return on_same_geometry(candidate.normal, normal, std::abs(candidate.normal.dot(foot) - candidate.offset),
+                              std::max(plane.bend_degrees, candidate.bend_degrees));
     };
     auto of_its_material = [&](const CellPlane& candidate) {
       return candidate.material == plane.material && on_image_plane(candidate);
@@ -110,8 +124,9 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
       // for it (else a strip three voxels wide would match its shifted copy).
       auto inside_one_material = [&] {
         return std::none_of(planes.begin(), planes.end(), [&](const CellPlane& other) {
-          return other.material != plane.material && std::abs(other.normal.dot(plane.normal)) > cos_tolerance_ &&
-                 std::abs(other.normal.dot(source_foot) - other.offset) < offset_tolerance_;
+          return other.material != plane.material &&
+                 on_same_geometry(other.normal, plane.normal, std::abs(other.normal.dot(source_foot) - other.offset),
+                                  std::max(plane.bend_degrees, other.bend_degrees));
         });
       };
       if (std::any_of(direct_planes.begin(), direct_planes.end(), on_image_plane) && inside_one_material()) return false;
@@ -127,9 +142,11 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
     const Vec3 direction = t.apply_direction(line.direction);
     const bool found = image.any([&](std::uint32_t other) {
       for (const CellLine& candidate : surface_.lines(other)) {
-        if (candidate.kind != line.kind || std::abs(candidate.direction.dot(direction)) < cos_tolerance_) continue;
+        if (candidate.kind != line.kind) continue;
         const Vec3 offset = foot - candidate.point;
-        if ((offset - offset.dot(candidate.direction) * candidate.direction).norm() < offset_tolerance_) return true;
+        if (on_same_geometry(candidate.direction, direction, (offset - offset.dot(candidate.direction) * candidate.direction).norm(),
+                             std::max(line.bend_degrees, candidate.bend_degrees)))
+          return true;
       }
       return false;
     });

@@ -15,6 +15,14 @@ namespace dg {
 struct RegionOptions {
   double angle_tolerance_degrees = 1.0;  ///< mapped planes/lines must agree in direction within this
   double offset_tolerance_eps = 0.1;     ///< ... and in position within this many eps
+  /// Facets of a tessellated curve (a plane or line with a bend, see CellPlane) may instead land
+  /// tilted by up to the angle tolerance plus their bend (at most `max_bend_degrees`), as long as
+  /// they stay within `curved_deviation_eps` x eps of the facet they land on across the voxel:
+  /// distance at the image of the cell centre + half the voxel diagonal x sin(tilt). A motion
+  /// that does not share the tessellation step (a handrail in 8-degree segments under a
+  /// 22.5-degree screw) maps such facets onto the curve, not onto its facets.
+  double max_bend_degrees = 15.0;
+  double curved_deviation_eps = 0.25;
   /// Point clouds compare fitted cell planes and creases, with these tolerances.
   double cloud_angle_tolerance_degrees = 3.0;
   double cloud_offset_tolerance_eps = 0.25;
@@ -44,8 +52,15 @@ class CellMatcher {
   bool symmetric(std::uint32_t cell, const RigidTransform& t, const RigidTransform& inverse) const;
 
  private:
+  /// Whether geometry with unit direction `a` (a normal, or a line direction), at `distance` from
+  /// geometry with unit direction `b`, lies on it: exactly for flat geometry (`bend_degrees` no
+  /// more than the angle tolerance), within the curved deviation for facets of curves.
+  bool on_same_geometry(const Vec3& a, const Vec3& b, double distance, double bend_degrees) const;
+
   const VoxelSurface& surface_;
   double cos_tolerance_, offset_tolerance_;
+  double angle_tolerance_degrees_, max_bend_degrees_, curved_deviation_;
+  bool exact_only_;  // point clouds: fitted planes carry no tessellation
 };
 
 struct SymmetricRegion {

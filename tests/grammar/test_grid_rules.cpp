@@ -165,6 +165,45 @@ TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with
   CHECK(along_stakes->count == stakes - 1);
 }
 
+TEST_CASE("corpus: the Sweet Home 3D spiral staircase gives a 1-grid of its steps along the screw", "[grammar][grid][corpus]") {
+  const std::filesystem::path stairs = dg::test::corpus_file("meshes/arch-sh3d-spiral-staircase/spiralStaircase.obj");
+  if (!std::filesystem::exists(stairs)) {
+    WARN("corpus not found at " << stairs.string() << ": corpus check skipped");
+    return;
+  }
+  // Its handrail is swept in 8-degree segments while the steps turn by 22.5 degrees, so only
+  // tessellation-tolerant matching lets cut planes cross the rail.
+  const dg::PreparedModel prepared = dg::prepare_model(stairs);
+  const dg::TriangleMesh& mesh = prepared.model.mesh;
+  // Ground truth from the mesh: the treads (material "amber") are slabs whose horizontal top
+  // faces lie at distinct heights, one per step.
+  std::uint32_t amber = 0;
+  while (amber < prepared.model.materials.size() && prepared.model.materials[amber].name != "amber") ++amber;
+  REQUIRE(amber < prepared.model.materials.size());
+  std::vector<double> tread_tops;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 n = mesh.area_vector(t).normalized();
+    if (mesh.materials[t] == amber && n.y() > 0.99) tread_tops.push_back(mesh.positions[mesh.triangles[t][0]].y());
+  }
+  std::sort(tread_tops.begin(), tread_tops.end());
+  tread_tops.erase(std::unique(tread_tops.begin(), tread_tops.end(), [](double a, double b) { return b - a < 1e-3; }),
+                   tread_tops.end());
+  REQUIRE(tread_tops.size() >= 10);
+  const double rise = tread_tops[1] - tread_tops[0];
+
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const dg::GridDirection& d = grids[0].directions[0];
+  const dg::ScrewParameters screw = dg::screw_parameters(d.motion);
+  CHECK(std::abs(screw.axis.y()) == Approx(1).margin(1e-3));  // the pole is vertical
+  CHECK(std::abs(screw.slide) == Approx(rise).margin(2e-3));
+  CHECK(screw.angle * 180 / 3.14159265358979 == Approx(22.5).margin(0.1));  // 16 steps per turn
+  // As for a fence: one unit per gap between treads.
+  CHECK(d.count == static_cast<int>(tread_tops.size()) - 1);
+}
+
 TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when its window tints count as one",
           "[grammar][grid][corpus][materials]") {
   const std::filesystem::path hochhaus = dg::test::corpus_file("meshes/arch-fg-hochhaus-asemwald/hochhaus_asemwald.obj");

@@ -7,6 +7,7 @@
 #include "geometry/prepared_model.h"
 #include "symmetry/symmetric_region.h"
 
+#include "support/cell_symmetry.h"
 #include "support/material_models.h"
 
 #include <catch2/catch.hpp>
@@ -17,12 +18,7 @@ namespace {
 
 // Fraction of the surface cells that the slide by t maps onto the same material and back.
 double symmetric_fraction(const dg::PreparedModel& prepared, const Vec3& t) {
-  const dg::CellMatcher matcher(prepared.surface, nullptr);
-  const dg::RigidTransform slide{dg::Mat3::Identity(), t};
-  const dg::RigidTransform back = slide.inverse();
-  std::size_t symmetric = 0;
-  for (std::uint32_t c = 0; c < prepared.surface.cell_count(); ++c) symmetric += matcher.symmetric(c, slide, back) ? 1 : 0;
-  return static_cast<double>(symmetric) / static_cast<double>(prepared.surface.cell_count());
+  return dg::test::symmetric_fraction(prepared, dg::RigidTransform{dg::Mat3::Identity(), t});
 }
 
 // Voxels of 0.5: each stripe of 1.5 is three voxels tall.
