@@ -54,6 +54,46 @@ std::vector<std::int32_t> label_components(const VoxelSurface& surface, const st
   return label;
 }
 
+// The cells that `wall` cuts off from the `outer` cells: the parts of the surface without the
+// wall that touch the wall and hold no outer cell (parts of the model the wall does not touch are
+// not cut off by it). Each part is explored from the wall only until it meets an outer cell, so
+// the large outer side costs little.
+Cells cut_off_side(const VoxelSurface& surface, const Cells& wall, const std::vector<char>& wall_mask,
+                   const std::vector<char>& outer) {
+  std::vector<std::int32_t> part(surface.cell_count(), -1);
+  std::vector<char> part_is_outer;
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t w : wall)
+    for (std::uint32_t start : surface.neighbours(w)) {
+      if (wall_mask[start] || part[start] >= 0) continue;
+      const auto id = static_cast<std::int32_t>(part_is_outer.size());
+      part_is_outer.push_back(0);
+      part[start] = id;
+      queue.assign(1, start);
+      for (std::size_t head = 0; head < queue.size() && !part_is_outer[id]; ++head) {
+        const std::uint32_t c = queue[head];
+        if (outer[c]) {
+          part_is_outer[id] = 1;
+          break;
+        }
+        for (std::uint32_t nb : surface.neighbours(c)) {
+          if (wall_mask[nb]) continue;
+          if (part[nb] < 0) {
+            part[nb] = id;
+            queue.push_back(nb);
+          } else if (part[nb] != id && part_is_outer[part[nb]]) {
+            part_is_outer[id] = 1;  // joins a part already known to reach an outer cell
+            break;
+          }
+        }
+      }
+    }
+  Cells cut_off;
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+    if (part[c] >= 0 && !part_is_outer[part[c]]) cut_off.push_back(c);
+  return cut_off;
+}
+
 // Cells of `allowed` adjacent to a cell of `inside` and not in `inside` themselves.
 Cells ring_around(const VoxelSurface& surface, const Cells& inside, const std::vector<char>& inside_mask,
                   const std::vector<char>& allowed) {
@@ -121,18 +161,12 @@ std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker,
     image_site[static_cast<std::uint32_t>(image)] = 1;
   }
   touched_by_image = cells_of(image_site);
-  std::vector<char> rest(n, 1);
-  for (std::uint32_t c : touched_by_image) rest[c] = 0;
-  std::size_t parts = 0;
-  const std::vector<std::int32_t> part = label_components(surface, rest, parts);
-  std::vector<char> outer_part(parts, 0);
+  std::vector<char> outer(n, 0);
   for (std::uint32_t c : outside) {
     const std::int64_t image = m.matcher.image_cell(c, m.transform);
-    if (image >= 0 && part[static_cast<std::uint32_t>(image)] >= 0) outer_part[part[static_cast<std::uint32_t>(image)]] = 1;
+    if (image >= 0) outer[static_cast<std::uint32_t>(image)] = 1;
   }
-  Cells secondary;
-  for (std::uint32_t c = 0; c < n; ++c)
-    if (part[c] >= 0 && !outer_part[part[c]]) secondary.push_back(c);
+  const Cells secondary = cut_off_side(surface, touched_by_image, image_site, outer);
   if (secondary.empty()) return std::nullopt;  // T(site) does not split the model
 
   DockingSite s;

@@ -6,6 +6,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
 #include "support/mesh_distance.h"
+#include "support/shapes.h"
 #include "geometry/model_io.h"
 #include "support/corpus.h"
 #include "synthesis/shape_derivation.h"
@@ -294,6 +295,24 @@ TEST_CASE("docking sites of the fence: insert at the far end, delete at the near
   // One insert and one delete per direction of the motion.
   CHECK(inserts == 2);
   CHECK(deletes == 2);
+}
+
+TEST_CASE("docking sites: a separate part the site's image does not touch is not in any docker", "[grammar][docking]") {
+  // fence(4) in the x-z plane and, apart from it, a box behind its middle (y from 3 to 4).
+  dg::Model model;
+  model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
+  dg::test::append(model.mesh, dg::test::make_box(dg::Vec3(4, 3, 0), dg::Vec3(5, 4, 1)));
+  const Analysed a = analyse_model(std::move(model));
+  const dg::VoxelSurface& surface = a.prepared.surface;
+  auto in_box = [&](std::uint32_t c) { return surface.centre(c).y() > 2.5; };
+  std::size_t pitch_sites = 0;
+  for (const dg::DockingSite& s : a.sites.sites) {
+    if ((s.transform.translation.cwiseAbs() - dg::Vec3(2, 0, 0)).norm() < 1e-6) ++pitch_sites;
+    // The box is a part of its own: no site's image cuts it off, so it belongs to no docker.
+    CHECK(std::none_of(s.secondary_docker.begin(), s.secondary_docker.end(), in_box));
+    CHECK(std::none_of(s.docker.begin(), s.docker.end(), in_box));
+  }
+  CHECK(pitch_sites >= 4);  // the fence's insert and delete operations are still there
 }
 
 TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse", "[grammar][context_free]") {
