@@ -16,16 +16,16 @@ CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, c
       angle_tolerance_degrees_(options.angle_tolerance_degrees),
       max_bend_degrees_(options.max_bend_degrees),
       curved_deviation_(options.curved_deviation_eps * surface.eps()),
-      exact_only_(cloud != nullptr) {}
+      half_diagonal_(0.5 * std::sqrt(3.0) * surface.eps()) {}
 
 bool CellMatcher::on_same_geometry(const Vec3& a, const Vec3& b, double distance, double bend_degrees) const {
   const double cos_angle = std::min(1.0, std::abs(a.dot(b)));
   if (cos_angle > cos_tolerance_ && distance < offset_tolerance_) return true;
-  if (exact_only_ || bend_degrees <= angle_tolerance_degrees_) return false;
+  // Point-cloud planes are fitted, not tessellated: their bend is 0, so they stay exact too.
+  if (bend_degrees <= angle_tolerance_degrees_) return false;
   const double allowed = std::min(angle_tolerance_degrees_ + bend_degrees, max_bend_degrees_) * std::numbers::pi / 180.0;
   if (cos_angle < std::cos(allowed)) return false;
-  const double half_diagonal = 0.5 * std::sqrt(3.0) * surface_.eps();
-  return distance + half_diagonal * std::sqrt(1.0 - cos_angle * cos_angle) < curved_deviation_;
+  return distance + half_diagonal_ * std::sqrt(1.0 - cos_angle * cos_angle) < curved_deviation_;
 }
 
 std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p) {

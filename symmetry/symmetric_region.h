@@ -60,7 +60,7 @@ class CellMatcher {
   const VoxelSurface& surface_;
   double cos_tolerance_, offset_tolerance_;
   double angle_tolerance_degrees_, max_bend_degrees_, curved_deviation_;
-  bool exact_only_;  // point clouds: fitted planes carry no tessellation
+  double half_diagonal_;  // of a voxel, model units
 };
 
 struct SymmetricRegion {
