@@ -56,10 +56,12 @@ std::vector<std::int32_t> label_components(const VoxelSurface& surface, const st
 
 // The cells that `wall` cuts off from the `outer` cells: the parts of the surface without the
 // wall that touch the wall and hold no outer cell (parts of the model the wall does not touch are
-// not cut off by it). Each part is explored from the wall only until it meets an outer cell, so
-// the large outer side costs little.
+// not cut off by it). Parts with less surface than `min_part_area` (model units^2) are voxel
+// noise, such as a cell the wall encloses that holds a sliver of a triangle, and do not count.
+// Each part is explored from the wall only until it meets an outer cell, so the large outer side
+// costs little.
 Cells cut_off_side(const VoxelSurface& surface, const Cells& wall, const std::vector<char>& wall_mask,
-                   const std::vector<char>& outer) {
+                   const std::vector<char>& outer, double min_part_area) {
   std::vector<std::int32_t> part(surface.cell_count(), -1);
   std::vector<char> part_is_outer;
   std::vector<std::uint32_t> queue;
@@ -88,9 +90,12 @@ Cells cut_off_side(const VoxelSurface& surface, const Cells& wall, const std::ve
         }
       }
     }
+  std::vector<double> part_area(part_is_outer.size(), 0.0);
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+    if (part[c] >= 0) part_area[static_cast<std::size_t>(part[c])] += surface.area(c);
   Cells cut_off;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-    if (part[c] >= 0 && !part_is_outer[part[c]]) cut_off.push_back(c);
+    if (part[c] >= 0 && !part_is_outer[part[c]] && part_area[part[c]] >= min_part_area) cut_off.push_back(c);
   return cut_off;
 }
 
@@ -166,8 +171,9 @@ std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker,
     const std::int64_t image = m.matcher.image_cell(c, m.transform);
     if (image >= 0) outer[static_cast<std::uint32_t>(image)] = 1;
   }
-  const Cells secondary = cut_off_side(surface, touched_by_image, image_site, outer);
-  if (secondary.empty()) return std::nullopt;  // T(site) does not split the model
+  // T(site) must split the model: cut off a part with at least one voxel face of surface.
+  const Cells secondary = cut_off_side(surface, touched_by_image, image_site, outer, surface.eps() * surface.eps());
+  if (secondary.empty()) return std::nullopt;
 
   DockingSite s;
   s.transform = m.transform;

@@ -115,12 +115,9 @@ TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][gr
 }
 
 TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster pitch", "[grammar][grid][corpus]") {
-  const std::filesystem::path railing = dg::test::corpus_file("meshes/arch-sh3d-railing/railing.obj");
-  if (!std::filesystem::exists(railing)) {
-    WARN("corpus not found at " << railing.string() << ": corpus check skipped");
-    return;
-  }
-  const dg::PreparedModel prepared = dg::prepare_model(railing);
+  const std::optional<std::filesystem::path> railing = dg::test::corpus_file_if_present("meshes/arch-sh3d-railing/railing.obj");
+  if (!railing) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*railing);
   const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
   const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
   REQUIRE(grids.size() == 1);
@@ -131,12 +128,9 @@ TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster p
 }
 
 TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with one unit per gap", "[grammar][grid][corpus]") {
-  const std::filesystem::path gate = dg::test::corpus_file("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
-  if (!std::filesystem::exists(gate)) {
-    WARN("corpus not found at " << gate.string() << ": corpus check skipped");
-    return;
-  }
-  const dg::PreparedModel prepared = dg::prepare_model(gate);
+  const std::optional<std::filesystem::path> gate = dg::test::corpus_file_if_present("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
+  if (!gate) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*gate);
   // Ground truth from the mesh itself: the stakes' flat tops are the faces at the highest y, one
   // quad per stake, so the distinct z of the top vertices come in pairs.
   const dg::TriangleMesh& mesh = prepared.model.mesh;
@@ -166,14 +160,11 @@ TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with
 }
 
 TEST_CASE("corpus: the Sweet Home 3D spiral staircase gives a 1-grid of its steps along the screw", "[grammar][grid][corpus]") {
-  const std::filesystem::path stairs = dg::test::corpus_file("meshes/arch-sh3d-spiral-staircase/spiralStaircase.obj");
-  if (!std::filesystem::exists(stairs)) {
-    WARN("corpus not found at " << stairs.string() << ": corpus check skipped");
-    return;
-  }
+  const std::optional<std::filesystem::path> stairs = dg::test::corpus_file_if_present("meshes/arch-sh3d-spiral-staircase/spiralStaircase.obj");
+  if (!stairs) return;
   // Its handrail is swept in 8-degree segments while the steps turn by 22.5 degrees, so only
   // tessellation-tolerant matching lets cut planes cross the rail.
-  const dg::PreparedModel prepared = dg::prepare_model(stairs);
+  const dg::PreparedModel prepared = dg::prepare_model(*stairs);
   const dg::TriangleMesh& mesh = prepared.model.mesh;
   // Ground truth from the mesh: the treads (material "amber") are slabs whose horizontal top
   // faces lie at distinct heights, one per step.
@@ -206,16 +197,13 @@ TEST_CASE("corpus: the Sweet Home 3D spiral staircase gives a 1-grid of its step
 
 TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when its window tints count as one",
           "[grammar][grid][corpus][materials]") {
-  const std::filesystem::path hochhaus = dg::test::corpus_file("meshes/arch-fg-hochhaus-asemwald/hochhaus_asemwald.obj");
-  if (!std::filesystem::exists(hochhaus)) {
-    WARN("corpus not found at " << hochhaus.string() << ": corpus check skipped");
-    return;
-  }
+  const std::optional<std::filesystem::path> hochhaus = dg::test::corpus_file_if_present("meshes/arch-fg-hochhaus-asemwald/hochhaus_asemwald.obj");
+  if (!hochhaus) return;
   // Its facades are flat: floors and bays exist only in materials, and each window's glass has
   // one of four tints or two blinds, chosen at random.
   dg::PrepareOptions options;
   options.same_materials = {"glas*,jalousie*"};
-  const dg::PreparedModel prepared = dg::prepare_model(hochhaus, options);
+  const dg::PreparedModel prepared = dg::prepare_model(*hochhaus, options);
   const dg::TriangleMesh& mesh = prepared.model.mesh;
   const std::vector<dg::Material>& materials = prepared.model.materials;
   // Ground truth from the mesh: the most common gap between the window bands' lower edges

@@ -4,6 +4,7 @@
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
 #include "grammar/random.h"
+#include "support/corpus.h"
 #include "support/shapes.h"
 
 #include <catch2/catch.hpp>
@@ -165,13 +166,9 @@ TEST_CASE("symmetry detection is independent of the thread count", "[symmetry]")
 }
 
 namespace {
-const std::filesystem::path kCorpus = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / ".." / "shared" / "corpus" / "meshes";
+const std::filesystem::path kCorpus = dg::test::corpus_file("meshes");
 
-bool corpus_available() {
-  if (std::filesystem::exists(kCorpus)) return true;
-  WARN("corpus not found at " << kCorpus.string() << ": corpus checks skipped");
-  return false;
-}
+bool corpus_available() { return dg::test::corpus_file_if_present("meshes").has_value(); }
 }  // namespace
 
 TEST_CASE("corpus: spiral staircase screw, railing baluster pitch, organic model", "[symmetry][corpus]") {

@@ -45,12 +45,9 @@ std::vector<double> baluster_positions(const dg::TriangleMesh& mesh) {
 }  // namespace
 
 TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one baluster and one pitch", "[synthesis][grid][corpus]") {
-  const std::filesystem::path railing = dg::test::corpus_file("meshes/arch-sh3d-railing/railing.obj");
-  if (!std::filesystem::exists(railing)) {
-    WARN("corpus not found at " << railing.string() << ": corpus resize check skipped");
-    return;
-  }
-  const dg::PreparedModel prepared = dg::prepare_model(railing);
+  const std::optional<std::filesystem::path> railing = dg::test::corpus_file_if_present("meshes/arch-sh3d-railing/railing.obj");
+  if (!railing) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*railing);
   const dg::TriangleMesh& exemplar = prepared.model.mesh;
   // Ground truth from the exemplar itself, not from the grammar: 8 balusters, evenly spaced.
   const std::vector<double> balusters = baluster_positions(exemplar);
@@ -96,12 +93,9 @@ TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one balu
 }
 
 TEST_CASE("corpus: the Kenney metal gate resized past its exemplar's counts stays r-similar", "[synthesis][grid][corpus]") {
-  const std::filesystem::path gate = dg::test::corpus_file("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
-  if (!std::filesystem::exists(gate)) {
-    WARN("corpus not found at " << gate.string() << ": corpus resize check skipped");
-    return;
-  }
-  const dg::PreparedModel prepared = dg::prepare_model(gate);
+  const std::optional<std::filesystem::path> gate = dg::test::corpus_file_if_present("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
+  if (!gate) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*gate);
   const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
   REQUIRE(grids.size() == 1);
   REQUIRE(grids[0].directions.size() == 2);
@@ -116,7 +110,7 @@ TEST_CASE("corpus: the Kenney metal gate resized past its exemplar's counts stay
     CAPTURE(counts);
     dg::Model candidate;
     candidate.mesh = dg::resize_grid(grids[0], pieces, counts, dg::kSeamWeldFraction * eps);
-    const dg::VerifyReport report = dg::verify_models(dg::read_model(gate), std::move(candidate));
+    const dg::VerifyReport report = dg::verify_models(dg::read_model(*gate), std::move(candidate));
     CHECK(report.similarity.fraction >= 0.995);
     CHECK(report.pass);
   }
