@@ -21,6 +21,7 @@
 
 #include "geometry/mesh.h"
 #include "geometry/prepared_model.h"
+#include "geometry/progress.h"
 #include "geometry/rigid_transform.h"
 #include "grammar/docking_sites.h"
 #include "grammar/seam_surface.h"
@@ -87,8 +88,10 @@ struct ContextFreeStats {
 };
 
 /// Builds the context-free grammar of a prepared mesh from its docking sites. Deterministic
-/// for a given seed.
+/// for a given seed. `progress` hears stage "context-free rules" with the fraction done (most of
+/// the time goes into cutting the exemplar along the seams of every site location).
 ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, const DockingSiteResult& sites,
-                                              const ContextFreeOptions& options, ContextFreeStats* stats = nullptr);
+                                              const ContextFreeOptions& options, ContextFreeStats* stats = nullptr,
+                                              const ProgressCallback& progress = {});
 
 }  // namespace dg

@@ -382,12 +382,14 @@ std::string piece_name(const std::vector<int>& classes) {
 }
 
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
-                                 const GridOptions& options) {
+                                 const GridOptions& options, const ProgressCallback& progress) {
   std::vector<GridRule> grids;
   if (prepared.model.is_point_cloud()) return grids;
   std::vector<GridDirection> translations, screws;
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
-  for (const SymmetryFamily& family : symmetries.families) {
+  for (std::size_t f = 0; f < symmetries.families.size(); ++f) {
+    report_progress(progress, "grid rules", static_cast<double>(f) / static_cast<double>(symmetries.families.size()));
+    const SymmetryFamily& family = symmetries.families[f];
     if (family.kind != "translation" && family.kind != "screw") continue;
     // The generator first, then its powers until one gives a direction: a generator can be a
     // motion that maps only outlines onto outlines (half a window pitch on a painted wall), while

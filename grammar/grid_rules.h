@@ -16,6 +16,7 @@
 #include "geometry/mesh.h"
 #include "geometry/rigid_transform.h"
 #include "geometry/prepared_model.h"
+#include "geometry/progress.h"
 #include "symmetry/symmetry_detection.h"
 
 #include <algorithm>
@@ -74,9 +75,10 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
 /// commute); directions that are sums of chosen ones are dropped. The direction with the most
 /// units needs GridOptions::min_repeats of them; the others may have one (see min_repeats). Each screw axis gives a
-/// further 1-grid. Rotations (no slide) give none.
+/// further 1-grid. Rotations (no slide) give none. `progress` hears stage "grid rules" with the
+/// fraction of repetition families examined.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
-                                 const GridOptions& options = {});
+                                 const GridOptions& options = {}, const ProgressCallback& progress = {});
 
 /// Class of a slab along one direction (slab 0 lies before the first plane, slab count + 1 after
 /// the last): 0 = head (slabs 0 .. head_units), 1 = the repeated unit (slab head_units + 1),

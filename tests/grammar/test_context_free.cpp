@@ -1,6 +1,7 @@
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_rules.h"
 #include "geometry/errors.h"
 
 #include "assets/generator/asset.h"
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <string_view>
 
 namespace {
 
@@ -322,6 +324,41 @@ TEST_CASE("corpus: an image that cuts off only voxel slivers gives no docking si
   REQUIRE_FALSE(a->symmetries.symmetries.empty());
   const double eps = a->prepared.surface.eps();
   for (const dg::DockingSite& s : a->sites.sites) CHECK(s.secondary_docker_area >= eps * eps);
+}
+
+TEST_CASE("grid rules and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
+  Analysed a = analyse_model(std::move(model));
+  REQUIRE_FALSE(a.grammar.empty());
+  std::vector<std::pair<std::string, double>> heard;
+  const dg::ProgressCallback listen = [&](std::string_view stage, double fraction) {
+    heard.emplace_back(std::string(stage), fraction);
+    return true;
+  };
+  // Only the fractions reported for `stage`: from 0, never backwards, at most 1.
+  auto fractions_of = [&](const std::string& stage) {
+    std::vector<double> fractions;
+    for (const auto& [name, fraction] : heard)
+      if (name == stage) fractions.push_back(fraction);
+    REQUIRE_FALSE(fractions.empty());
+    CHECK(fractions.front() == 0.0);
+    CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+    CHECK(fractions.back() <= 1.0);
+    return fractions;
+  };
+  dg::find_grids(a.prepared, a.symmetries, {}, listen);
+  CHECK(fractions_of("grid rules").size() == a.symmetries.families.size());  // one per family
+  heard.clear();
+  const dg::ContextFreeGrammar again = dg::build_context_free_grammar(a.prepared, a.sites, {}, nullptr, listen);
+  CHECK(again.productions.size() == a.grammar.productions.size());  // listening changes nothing
+  const std::vector<double> fractions = fractions_of("context-free rules");
+  CHECK(fractions.back() == 1.0);
+  // Two reports per cut location (seams, then pieces) and two at the end.
+  CHECK(fractions.size() >= 2 * a.grammar.nonterminals.size() + 2);
+  const dg::ProgressCallback cancel = [](std::string_view, double) { return false; };
+  CHECK_THROWS_AS(dg::build_context_free_grammar(a.prepared, a.sites, {}, nullptr, cancel), dg::LimitError);
+  CHECK_THROWS_AS(dg::find_grids(a.prepared, a.symmetries, {}, cancel), dg::LimitError);
 }
 
 TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse", "[grammar][context_free]") {

@@ -54,7 +54,7 @@ void add_analyze_command(CLI::App& app) {
     grammar.up_axis = model_up_axis(options->model.model_path, options->up);
     grammar.exemplar = prepared.model.mesh;
     grammar.materials = prepared.model.materials;
-    for (GridRule& rule : find_grids(prepared, symmetries)) {
+    for (GridRule& rule : find_grids(prepared, symmetries, {}, progress)) {
       std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
@@ -62,11 +62,10 @@ void add_analyze_command(CLI::App& app) {
     if (progress) progress("docking sites", 0.0);
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
-    if (progress) progress("context-free rules", 0.0);
     ContextFreeOptions cf_options;
     cf_options.seed = options->seed;
     ContextFreeStats cf_stats;
-    grammar.context_free = build_context_free_grammar(prepared, docking, cf_options, &cf_stats);
+    grammar.context_free = build_context_free_grammar(prepared, docking, cf_options, &cf_stats, progress);
     grammar_timings.push_back({"context-free rules", stopwatch.lap()});
 
     const std::filesystem::path folder(options->output);
