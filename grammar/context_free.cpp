@@ -322,8 +322,6 @@ class Builder {
     return touching;
   }
 
-  // The exemplar cut along the seams of all kept locations (each in its own frame), once: every
-  // piece of every production is a set of its triangles.
   // Shares of the run, measured on the corpus: cutting along the seams about two thirds, finding
   // the dockers' pieces a quarter, the rest a tenth.
   static constexpr double kCutShare = 0.65, kPiecesShare = 0.25;
@@ -334,6 +332,8 @@ class Builder {
     return static_cast<std::size_t>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.kept; }));
   }
 
+  // The exemplar cut along the seams of all kept locations (each in its own frame), once: every
+  // piece of every production is a set of its triangles.
   void cut_model() {
     cut_ = mesh_;
     origin_.resize(mesh_.triangles.size());
