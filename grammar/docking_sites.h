@@ -13,6 +13,7 @@
 // paper's secondary operations as primary operations of the inverse.
 
 #include "geometry/prepared_model.h"
+#include "geometry/progress.h"
 #include "geometry/rigid_transform.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -69,8 +70,9 @@ struct DockingSiteResult {
 };
 
 /// Elementary docking sites of the top symmetries of a prepared mesh. Parallel over motions
-/// (TBB) and deterministic for any thread count.
+/// (TBB) and deterministic for any thread count. `progress` hears stage "docking sites" with
+/// the fraction of motions done, between batches of motions.
 DockingSiteResult find_docking_sites(const PreparedModel& prepared, const SymmetryResult& symmetries,
-                                     const DockingSiteOptions& options = {});
+                                     const DockingSiteOptions& options = {}, const ProgressCallback& progress = {});
 
 }  // namespace dg

@@ -326,7 +326,7 @@ TEST_CASE("corpus: an image that cuts off only voxel slivers gives no docking si
   for (const dg::DockingSite& s : a->sites.sites) CHECK(s.secondary_docker_area >= eps * eps);
 }
 
-TEST_CASE("grid rules and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
+TEST_CASE("grid rules, docking sites and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
   dg::Model model;
   model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
   Analysed a = analyse_model(std::move(model));
@@ -350,6 +350,10 @@ TEST_CASE("grid rules and context-free rules report their progress in order and 
   dg::find_grids(a.prepared, a.symmetries, {}, listen);
   CHECK(fractions_of("grid rules").size() == a.symmetries.families.size());  // one per family
   heard.clear();
+  const dg::DockingSiteResult sites = dg::find_docking_sites(a.prepared, a.symmetries, {}, listen);
+  CHECK(sites.sites.size() == a.sites.sites.size());  // listening changes nothing
+  CHECK(fractions_of("docking sites").back() == 1.0);
+  heard.clear();
   const dg::ContextFreeGrammar again = dg::build_context_free_grammar(a.prepared, a.sites, {}, nullptr, listen);
   CHECK(again.productions.size() == a.grammar.productions.size());  // listening changes nothing
   const std::vector<double> fractions = fractions_of("context-free rules");
@@ -359,6 +363,7 @@ TEST_CASE("grid rules and context-free rules report their progress in order and 
   const dg::ProgressCallback cancel = [](std::string_view, double) { return false; };
   CHECK_THROWS_AS(dg::build_context_free_grammar(a.prepared, a.sites, {}, nullptr, cancel), dg::LimitError);
   CHECK_THROWS_AS(dg::find_grids(a.prepared, a.symmetries, {}, cancel), dg::LimitError);
+  CHECK_THROWS_AS(dg::find_docking_sites(a.prepared, a.symmetries, {}, cancel), dg::LimitError);
 }
 
 TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse", "[grammar][context_free]") {

@@ -59,8 +59,7 @@ void add_analyze_command(CLI::App& app) {
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
     grammar_timings.push_back({"grid rules", stopwatch.lap()});
-    if (progress) progress("docking sites", 0.0);
-    const DockingSiteResult docking = find_docking_sites(prepared, symmetries);
+    const DockingSiteResult docking = find_docking_sites(prepared, symmetries, {}, progress);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
     ContextFreeOptions cf_options;
     cf_options.seed = options->seed;
