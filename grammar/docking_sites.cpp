@@ -66,6 +66,7 @@ Cells cut_off_side(const VoxelSurface& surface, const Cells& wall, const std::ve
   std::vector<std::int32_t> part(surface.cell_count(), -1);
   std::vector<char> part_is_outer;
   std::vector<std::uint32_t> queue;
+  Cells cut_off;
   for (std::uint32_t w : wall)
     for (std::uint32_t start : surface.neighbours(w)) {
       if (wall_mask[start] || part[start] >= 0) continue;
@@ -90,13 +91,13 @@ Cells cut_off_side(const VoxelSurface& surface, const Cells& wall, const std::ve
           }
         }
       }
+      if (part_is_outer[id]) continue;
+      // Explored to the end without an outer cell: the queue holds the whole part.
+      double area = 0.0;
+      for (std::uint32_t c : queue) area += surface.area(c);
+      if (area >= min_part_area) cut_off.insert(cut_off.end(), queue.begin(), queue.end());
     }
-  std::vector<double> part_area(part_is_outer.size(), 0.0);
-  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-    if (part[c] >= 0) part_area[static_cast<std::size_t>(part[c])] += surface.area(c);
-  Cells cut_off;
-  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-    if (part[c] >= 0 && !part_is_outer[part[c]] && part_area[part[c]] >= min_part_area) cut_off.push_back(c);
+  std::sort(cut_off.begin(), cut_off.end());
   return cut_off;
 }
 
