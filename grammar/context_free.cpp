@@ -419,7 +419,7 @@ class Builder {
 
   // A docker cut at one location must fit the hole of every other location: the seam curve of
   // each location, moved into the non-terminal's frame, must be that of its first location
-  // (within kSeamFitFraction of eps).
+  // (within kSeamFitFraction of eps). Records each class's largest misfit.
   void check_fit() {
     const std::vector<std::int64_t> across = triangles_across(cut_);
     std::vector<char> inside(cut_.triangles.size(), 0);
@@ -432,13 +432,20 @@ class Builder {
       return segments;
     };
     const double tolerance = kSeamFitFraction * surface_.eps();
-    for (const auto& members : class_nodes_) {
+    class_misfit_.assign(class_nodes_.size(), 0.0);
+    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      const std::vector<std::size_t>& members = class_nodes_[k];
       const Node& root = nodes_[members.front()];
       const std::vector<Segment> reference = root.kept ? curve(root) : std::vector<Segment>{};
       for (std::size_t i : members) {
         Node& n = nodes_[i];
-        n.kept = n.kept && !reference.empty() && !n.piece.empty() &&
-                 same_curve(curve(n), reference, tolerance, surface_.eps());
+        if (!n.kept || reference.empty() || n.piece.empty()) {
+          n.kept = false;
+          continue;
+        }
+        const double misfit = seam_misfit(curve(n), reference, tolerance, surface_.eps());
+        n.kept = misfit <= tolerance;
+        if (n.kept) class_misfit_[k] = std::max(class_misfit_[k], misfit);
       }
       // A non-terminal needs at least two locations to offer an alternative.
       std::size_t kept = 0;
@@ -590,6 +597,7 @@ class Builder {
       nt.name = fmt::format("N{}", grammar.nonterminals.size() + 1);
       nt.seam = class_seam_[k];
       nt.sites = kept;
+      nt.seam_misfit = class_misfit_[k];
       grammar.nonterminals.push_back(nt);
     }
     auto kept_only = [&](const std::vector<std::size_t>& list) {
@@ -664,6 +672,7 @@ class Builder {
   std::vector<Relation> relations_;
   std::vector<std::vector<std::size_t>> class_nodes_;
   std::vector<SeamSurface> class_seam_;               // per class, in its frame
+  std::vector<double> class_misfit_;                  // per class: largest seam misfit of a kept location, model units
   std::vector<std::vector<char>> class_docker_side_;  // per class with a voxel seam: cells on its docker side
   std::vector<SeamFaceIndex> class_face_index_;       // per class: its seam's voxel faces by plane
   TriangleMesh cut_;                                  // the exemplar cut along every kept seam
@@ -675,6 +684,12 @@ class Builder {
 };
 
 }  // namespace
+
+double seam_weld_tolerance(const ContextFreeGrammar& grammar, double eps) {
+  double tolerance = kSeamWeldFloorFraction * eps;
+  for (const ShapeNonterminal& n : grammar.nonterminals) tolerance = std::max(tolerance, 2.0 * n.seam_misfit);
+  return tolerance;
+}
 
 ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, const DockingSiteResult& sites,
                                               const ContextFreeOptions& options, ContextFreeStats* stats,

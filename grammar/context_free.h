@@ -42,6 +42,9 @@ struct ShapeNonterminal {
   std::string name;
   SeamSurface seam;
   std::size_t sites = 0;  ///< exemplar locations of this shape
+  /// Largest distance (model units) between the seam curve of a location and that of its first
+  /// location, in this frame: how exactly the locations repeat (see seam_misfit).
+  double seam_misfit = 0.0;
 };
 
 /// A non-terminal occurrence on the right-hand side of a production.
@@ -69,6 +72,11 @@ struct ContextFreeGrammar {
   ShapeProduction axiom;
   bool empty() const { return nonterminals.empty(); }
 };
+
+/// How close (model units) the seam vertices of pieces derived from `grammar` are welded: twice
+/// the largest seam misfit of its non-terminals (a piece cut at one location placed at another
+/// differs from both by at most that), at least kSeamWeldFloorFraction of `eps`.
+double seam_weld_tolerance(const ContextFreeGrammar& grammar, double eps);
 
 struct ContextFreeOptions {
   int independent_set_trials = 10;  ///< random maximal independent sets per node (paper: 10)

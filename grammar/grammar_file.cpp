@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -181,7 +182,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
   const ContextFreeGrammar& cf = grammar.context_free;
   nlohmann::json nonterminals = nlohmann::json::array(), productions = nlohmann::json::array(), axiom = nullptr;
   for (const ShapeNonterminal& n : cf.nonterminals)
-    nonterminals.push_back({{"name", n.name}, {"seam", seam_json(n.seam)}, {"sites", n.sites}});
+    nonterminals.push_back({{"name", n.name}, {"seam", seam_json(n.seam)}, {"sites", n.sites}, {"seam_misfit", n.seam_misfit}});
   if (!cf.empty()) {
     axiom = production_json(grammar, cf.axiom, folder, "axiom.ply");
     for (std::size_t i = 0; i < cf.productions.size(); ++i)
@@ -243,6 +244,11 @@ void read_context_free(const nlohmann::json& document, int version, const std::s
     nt.name = field<std::string>(n, "name", where);
     nt.seam = read_seam(n, version, where);
     nt.sites = field<std::size_t>(n, "sites", where);
+    if (n.contains("seam_misfit")) {
+      nt.seam_misfit = field<double>(n, "seam_misfit", where);
+      if (!(nt.seam_misfit >= 0.0 && std::isfinite(nt.seam_misfit)))
+        throw InputError(where + ": non-terminal " + nt.name + " has a seam_misfit that is not a finite number >= 0");
+    }
     names[nt.name] = cf.nonterminals.size();
     cf.nonterminals.push_back(nt);
   }

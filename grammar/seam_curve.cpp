@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace dg {
@@ -22,29 +23,33 @@ double distance_to_segment(const Vec3& p, const Segment& s) {
   return (s[0] + t * d - p).norm();
 }
 
-// Every sample of `a` lies near some segment of `b`.
-bool covered(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance, double cell) {
+// The largest distance from a sample of `a` (segment ends and midpoints) to the nearest
+// segment of `b`, or infinity when some sample has no segment of `b` within `limit`.
+double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
   auto key = [&](const Vec3& p) {
     return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
                    static_cast<std::int64_t>(std::floor(p.z() / cell))};
   };
   std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
   for (std::uint32_t i = 0; i < b.size(); ++i) {
-    const CellKey lo = key(b[i][0].cwiseMin(b[i][1]) - Vec3::Constant(tolerance));
-    const CellKey hi = key(b[i][0].cwiseMax(b[i][1]) + Vec3::Constant(tolerance));
+    const CellKey lo = key(b[i][0].cwiseMin(b[i][1]) - Vec3::Constant(limit));
+    const CellKey hi = key(b[i][0].cwiseMax(b[i][1]) + Vec3::Constant(limit));
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid[{x, y, z}].push_back(i);
   }
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  double farthest = 0.0;
   for (const Segment& s : a)
     for (const Vec3& p : {s[0], s[1], Vec3(0.5 * (s[0] + s[1]))}) {
       const auto found = grid.find(key(p));
-      if (found == grid.end()) return false;
-      bool near = false;
-      for (std::uint32_t i : found->second) near = near || distance_to_segment(p, b[i]) <= tolerance;
-      if (!near) return false;
+      if (found == grid.end()) return kFar;
+      double nearest = kFar;
+      for (std::uint32_t i : found->second) nearest = std::min(nearest, distance_to_segment(p, b[i]));
+      if (nearest > limit) return kFar;
+      farthest = std::max(farthest, nearest);
     }
-  return true;
+  return farthest;
 }
 
 }  // namespace
@@ -83,8 +88,8 @@ std::vector<Segment> seam_segments(const TriangleMesh& mesh, const std::vector<s
   return segments;
 }
 
-bool same_curve(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance, double cell) {
-  return covered(a, b, tolerance, cell) && covered(b, a, tolerance, cell);
+double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
+  return std::max(farthest_sample(a, b, limit, cell), farthest_sample(b, a, limit, cell));
 }
 
 }  // namespace dg

@@ -4,7 +4,6 @@
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "grammar/random.h"
-#include "grammar/seam_curve.h"
 #include "synthesis/piece_collision.h"
 
 #include <algorithm>
@@ -143,7 +142,7 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     result.changed = result.changed || accepted->first != slot.slot.original_production;
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
-  if (options.weld_seams) resolve_t_junctions(result.mesh, kSeamFitFraction * eps, &seam_vertices);
+  if (options.weld_seams) resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_vertices);
   return result;
 }
 

@@ -48,7 +48,7 @@ struct ShapeDerivation {
 bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options);
 
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:
-/// seams are welded within kSeamFitFraction eps (grammar/seam_curve.h). Deterministic for a
+/// seams are welded within seam_weld_tolerance (grammar/context_free.h). Deterministic for a
 /// given seed.
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options);
 

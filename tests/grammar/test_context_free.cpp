@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <fstream>
@@ -153,6 +154,8 @@ TEST_CASE("context-free grammar survives the grammar file", "[grammar][context_f
   const dg::ShapeGrammar read = dg::read_grammar(path);
   REQUIRE(read.context_free.productions.size() == a.grammar.productions.size());
   REQUIRE(read.context_free.nonterminals.size() == a.grammar.nonterminals.size());
+  for (std::size_t n = 0; n < a.grammar.nonterminals.size(); ++n)
+    CHECK(read.context_free.nonterminals[n].seam_misfit == a.grammar.nonterminals[n].seam_misfit);
   dg::ShapeDerivationOptions options;
   options.seed = 5;
   const dg::ShapeDerivation before = dg::derive_shape(a.grammar, grammar.eps, options);
@@ -172,7 +175,8 @@ TEST_CASE("context-free grammar survives the grammar file", "[grammar][context_f
   const std::string name = "\"nonterminal\": \"" + a.grammar.nonterminals.front().name + "\"";
   const auto at = text.find(name);
   REQUIRE(at != std::string::npos);
-  text.replace(at, name.size(), "\"nonterminal\": \"N999\"");
+  const std::string unknown = "\"nonterminal\": \"N999\"";
+  text.replace(at, name.size(), unknown);
   std::ofstream(folder / "broken.grammar.json") << text;
   std::filesystem::copy(folder / "fence.grammar.pieces", folder / "broken.grammar.pieces");
   try {
@@ -180,6 +184,20 @@ TEST_CASE("context-free grammar survives the grammar file", "[grammar][context_f
     FAIL("no error for an unknown non-terminal");
   } catch (const dg::InputError& e) {
     CHECK(std::string(e.what()).find("N999") != std::string::npos);
+  }
+  // So is a negative seam misfit (it sets how closely generate welds seams).
+  text.replace(text.find(unknown), unknown.size(), name);
+  const std::string misfit = "\"seam_misfit\": ";
+  const auto misfit_at = text.find(misfit);
+  REQUIRE(misfit_at != std::string::npos);
+  const auto value_at = misfit_at + misfit.size();
+  text.replace(value_at, text.find_first_of(",\n}", value_at) - value_at, "-1");
+  std::ofstream(folder / "broken.grammar.json") << text;
+  try {
+    dg::read_grammar(folder / "broken.grammar.json");
+    FAIL("no error for a negative seam misfit");
+  } catch (const dg::InputError& e) {
+    CHECK(std::string(e.what()).find("seam_misfit") != std::string::npos);
   }
   std::filesystem::remove_all(folder);
 }
@@ -201,6 +219,41 @@ TEST_CASE("context-free grammar: seams of a float32 model fit up to its rounding
   CHECK(a.grammar.nonterminals.size() == exact_nonterminals);
   check_rebuilds_exemplar(a);
   CHECK(check_variants(a, 5).first.size() >= 2);  // fences of different lengths
+}
+
+TEST_CASE("context-free grammar: a fence whose units repeat only to 2e-3 eps keeps its rules and welds its seams",
+          "[grammar][context_free]") {
+  // Real assets repeat less exactly than float32 rounding (seams 1e-4 to 1e-2 eps apart from
+  // location to location). Every vertex of the fence moves along the fence by up to 2e-3 eps,
+  // the same for equal positions (so the mesh stays closed) but different from unit to unit.
+  dg::Model exact, shifted;
+  exact.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
+  shifted.mesh = exact.mesh;
+  const Analysed reference = analyse_model(std::move(exact));
+  REQUIRE_FALSE(reference.grammar.empty());
+  const double eps = reference.prepared.surface.eps();
+  for (Eigen::Vector3d& p : shifted.mesh.positions)
+    p.x() += 2e-3 * eps * std::sin(7.3 * p.x() / eps + 3.1 * p.y() / eps + 1.7 * p.z() / eps);
+  const Analysed a = analyse_model(std::move(shifted));
+  REQUIRE_FALSE(a.grammar.empty());
+  // The shifts change which symmetries and sites are found a little (one class of the exact
+  // fence splits in two), but every location the exact fence uses stays in use.
+  auto locations = [](const dg::ContextFreeGrammar& g) {
+    std::size_t sum = 0;
+    for (const dg::ShapeNonterminal& n : g.nonterminals) sum += n.sites;
+    return sum;
+  };
+  CHECK(a.grammar.nonterminals.size() >= reference.grammar.nonterminals.size());
+  CHECK(locations(a.grammar) == locations(reference.grammar));
+  double largest_misfit = 0.0;
+  for (const dg::ShapeNonterminal& n : a.grammar.nonterminals) largest_misfit = std::max(largest_misfit, n.seam_misfit);
+  CHECK(largest_misfit > 1e-4 * eps);  // the shifts show in the seams
+  CHECK(largest_misfit <= 1e-2 * eps);
+  CHECK(dg::seam_weld_tolerance(a.grammar, eps) == Approx(2.0 * largest_misfit));
+  for (const dg::ShapeNonterminal& n : reference.grammar.nonterminals) CHECK(n.seam_misfit < 1e-6 * eps);
+  CHECK(dg::seam_weld_tolerance(reference.grammar, eps) == Approx(1e-4 * eps));
+  check_rebuilds_exemplar(a);
+  CHECK(check_variants(a, 5).first.size() >= 2);  // closed fences of different lengths
 }
 
 // The corpus model at `relative` analysed, or nothing (with a warning) without the corpus.

@@ -114,7 +114,8 @@ nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProductio
 
 nlohmann::json nonterminals_json(const ContextFreeGrammar& g) {
   nlohmann::json out = nlohmann::json::array();
-  for (const ShapeNonterminal& n : g.nonterminals) out.push_back({{"name", n.name}, {"sites", n.sites}});
+  for (const ShapeNonterminal& n : g.nonterminals)
+    out.push_back({{"name", n.name}, {"sites", n.sites}, {"seam_misfit", n.seam_misfit}});
   return out;
 }
 
@@ -145,10 +146,14 @@ std::string context_free_markdown(const AnalysisReport& report) {
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
                             report.context_free.sites_slippable, report.context_free.sites_without_fit,
                             unpaired_sites_text(report) + holes_text(report.context_free));
-  md += "| non-terminal | exemplar sites | productions |\n|---|---|---|\n";
+  md += "| non-terminal | exemplar sites | productions | seam misfit (eps) |\n|---|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
-    md += fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
-                      std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }));
+    md += fmt::format("| {} | {} | {} | {:.1e} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
+                      std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }),
+                      cf.nonterminals[n].seam_misfit / report.grammar.eps);
+  md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
+                    "1e-2 eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
+                    seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
                     model_stem(report));
