@@ -30,6 +30,10 @@ struct FragmentMergeOptions {
   /// from both regions beside it, so the mesh stays conforming (e.g. where a plane cut crossed
   /// a fragment's own diagonal).
   bool straighten_label_borders = false;
+  /// How far (model units) cutting may have moved a vertex (cut_zone snaps vertices onto its
+  /// planes): a region's border vertex that is not kept may lie that far off the straight
+  /// border the re-triangulation follows, so its area may differ by that times the border length.
+  double moved_distance = 0.0;
 };
 
 /// Re-triangulates the regions of `mesh` (fragments with equal `origin`, equal `label` and,
@@ -38,8 +42,8 @@ struct FragmentMergeOptions {
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
 /// kept; others only where an edge between different labels, or an edge not used by exactly
 /// two triangles, ends; `options` lets some of those go too.
-/// A region whose re-triangulation does not reproduce its area (within 1e-9 relative) keeps its
-/// fragments. Deterministic.
+/// A region whose re-triangulation does not reproduce its area (within 1e-9 relative, plus
+/// options.moved_distance times the length of its border) keeps its fragments. Deterministic.
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
                                 const FragmentMergeOptions& options = {});

@@ -28,6 +28,8 @@ namespace {
 
 using Cells = std::vector<std::uint32_t>;
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+// Seam cuts move vertices within this fraction of eps onto their planes (no slivers thinner).
+constexpr double kCutSnapFraction = 1e-5;
 
 double jaccard(const Cells& a, const Cells& b) {
   std::size_t shared = 0;
@@ -338,7 +340,7 @@ class Builder {
     cut_ = mesh_;
     origin_.resize(mesh_.triangles.size());
     std::iota(origin_.begin(), origin_.end(), 0u);
-    const double tolerance = 1e-5 * surface_.eps();  // no slivers thinner than this
+    const double tolerance = kCutSnapFraction * surface_.eps();
     const double total = static_cast<double>(std::max<std::size_t>(1, kept_nodes()));
     std::size_t done = 0;
     for (const Node& n : nodes_) {
@@ -470,7 +472,7 @@ class Builder {
       label[t] = ids.emplace(holders[t], static_cast<std::uint32_t>(ids.size())).first->second;
     std::vector<char> corners(cut_.positions.size(), 0);
     std::fill(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(mesh_.positions.size()), 1);
-    MergedFragments merged = merge_fragments(cut_, origin_, label, corners);
+    MergedFragments merged = merge_fragments(cut_, origin_, label, corners, {.moved_distance = kCutSnapFraction * surface_.eps()});
     std::vector<std::uint32_t> origin(merged.mesh.triangles.size());
     for (Node& n : nodes_) n.piece.clear();
     for (std::uint32_t t = 0; t < merged.mesh.triangles.size(); ++t) {
@@ -560,7 +562,9 @@ class Builder {
     for (std::size_t c : children)
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
     const TriangleMesh merged =
-        merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners, {.straighten_open_borders = true}).mesh;
+        merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners,
+                        {.straighten_open_borders = true, .moved_distance = kCutSnapFraction * surface_.eps()})
+            .mesh;
     return without_unused_vertices(merged);
   }
 

@@ -86,3 +86,23 @@ TEST_CASE("fragment merge: straightened label borders keep only the vertices whe
   CHECK(edges.non_manifold_edges == 0);
   CHECK(edges.boundary_edges == 40);
 }
+
+TEST_CASE("fragment merge: border vertices a cut moved by up to moved_distance still go", "[geometry][fragment_merge]") {
+  // The y planes sit 4e-7 above the x planes' crossings with the square's diagonal, so the cut
+  // snaps those crossings onto them (tolerance 1e-6): 2.8e-7 off the diagonal, the border
+  // between the square's two triangles.
+  dg::TriangleMesh square;
+  square.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  dg::PlaneFamily x{Vec3::UnitX(), {}}, y{Vec3::UnitY(), {}};
+  for (int k = 1; k <= 9; ++k) x.offsets.push_back(0.1 * k), y.offsets.push_back(0.1 * k + 4e-7);
+  const dg::ZoneCut cut = dg::cut_zone(square, {1, 1}, {x, y}, 1e-6);
+  const std::vector<std::uint32_t> label(cut.mesh.triangles.size(), 0);
+  const std::vector<char> pinned = corners_pinned(cut.mesh);
+  const dg::MergedFragments exact = dg::merge_fragments(cut.mesh, cut.origin, label, pinned, {.straighten_open_borders = true});
+  CHECK(exact.mesh.triangles.size() > 100);  // the bent diagonal changes the area: fragments stay
+  const dg::MergedFragments merged =
+      dg::merge_fragments(cut.mesh, cut.origin, label, pinned, {.straighten_open_borders = true, .moved_distance = 1e-6});
+  CHECK(merged.mesh.triangles.size() == 2);
+  CHECK(merged.mesh.area() == Approx(cut.mesh.area()).epsilon(1e-6));
+}
