@@ -31,6 +31,58 @@ constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 // Seam cuts move vertices within this fraction of eps onto their planes (no slivers thinner).
 constexpr double kCutSnapFraction = 1e-5;
 
+// Flags the non-terminals a derivation can reach from `starts` through the productions of
+// `grammar` (the starts included).
+std::vector<char> reachable_nonterminals(const ContextFreeGrammar& grammar, std::vector<std::size_t> starts) {
+  std::vector<char> reached(grammar.nonterminals.size(), 0);
+  while (!starts.empty()) {
+    const std::size_t n = starts.back();
+    starts.pop_back();
+    if (reached[n]) continue;
+    reached[n] = 1;
+    for (const ShapeProduction& p : grammar.productions)
+      if (p.lhs == n)
+        for (const ChildSlot& slot : p.children) starts.push_back(slot.nonterminal);
+  }
+  return reached;
+}
+
+// Drops the non-terminals that no derivation reaches from the axiom, with their productions,
+// and numbers the others densely again (N1, N2, ... in their order). Returns how many went.
+std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
+  std::vector<std::size_t> starts;
+  for (const ChildSlot& slot : grammar.axiom.children) starts.push_back(slot.nonterminal);
+  const std::vector<char> reached = reachable_nonterminals(grammar, starts);
+  std::vector<std::size_t> new_nonterminal(grammar.nonterminals.size(), kNone);
+  std::vector<ShapeNonterminal> nonterminals;
+  for (std::size_t n = 0; n < grammar.nonterminals.size(); ++n) {
+    if (!reached[n]) continue;
+    new_nonterminal[n] = nonterminals.size();
+    nonterminals.push_back(grammar.nonterminals[n]);
+    nonterminals.back().name = fmt::format("N{}", nonterminals.size());
+  }
+  const std::size_t dropped = grammar.nonterminals.size() - nonterminals.size();
+  std::vector<std::size_t> new_production(grammar.productions.size(), kNoProduction);
+  std::vector<ShapeProduction> productions;
+  for (std::size_t p = 0; p < grammar.productions.size(); ++p) {
+    if (!reached[grammar.productions[p].lhs]) continue;
+    new_production[p] = productions.size();
+    productions.push_back(std::move(grammar.productions[p]));
+  }
+  auto renumber = [&](ShapeProduction& p) {
+    if (p.lhs != kNoProduction) p.lhs = new_nonterminal[p.lhs];
+    for (ChildSlot& slot : p.children) {
+      slot.nonterminal = new_nonterminal[slot.nonterminal];
+      slot.original_production = new_production[slot.original_production];
+    }
+  };
+  for (ShapeProduction& p : productions) renumber(p);
+  renumber(grammar.axiom);
+  grammar.nonterminals = std::move(nonterminals);
+  grammar.productions = std::move(productions);
+  return dropped;
+}
+
 double jaccard(const Cells& a, const Cells& b) {
   std::size_t shared = 0;
   for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
@@ -493,7 +545,8 @@ class Builder {
     }
   }
 
-  // Parent of each node: the smallest kept docker holding most of its band and docker.
+  // Parent of each node: the smallest kept docker holding most of its band and docker, and
+  // every triangle of its piece (so the parent's terminal and the child's piece add up).
   void build_tree() {
     const std::size_t n = surface_.cell_count();
     std::vector<std::size_t> order;
@@ -508,7 +561,9 @@ class Builder {
         const std::size_t c = order[c_index];
         Node& child = nodes_[c];
         if (child.parent != kNone || child.docker.size() >= nodes_[a].docker.size()) continue;
-        if (share_inside(child.site, docker) >= 0.9 && share_inside(child.docker, docker) >= 0.9) child.parent = a;
+        if (share_inside(child.site, docker) >= 0.9 && share_inside(child.docker, docker) >= 0.9 &&
+            std::includes(nodes_[a].piece.begin(), nodes_[a].piece.end(), child.piece.begin(), child.piece.end()))
+          child.parent = a;
       }
     }
     for (std::size_t i : order) {
@@ -644,15 +699,27 @@ class Builder {
       }
       if (nodes_[i].first_production == kNoProduction) nodes_[i].kept = false;
     }
+    // The axiom: of the roots' random independent sets whose pieces add up to the model, the
+    // one from which the most non-terminals can be reached (the first such in trial order).
     const UnfoldedChildren roots = unfolded(kept_only(roots_));
-    const std::vector<std::size_t> axiom_children = random_independent_sets(roots, 1, random).front();
-    grammar.axiom = production(kNone, axiom_children);
-    if (!adds_up(grammar.axiom, axiom_children, mesh_.area()) || opens_holes(grammar.axiom))
-      grammar.axiom = production(kNone, {});
+    grammar.axiom = production(kNone, {});
+    std::size_t most_reached = 0;
+    for (const auto& set : random_independent_sets(roots, options_.independent_set_trials, random)) {
+      std::vector<std::size_t> starts;
+      for (std::size_t c : set) starts.push_back(class_index_[nodes_[c].klass]);
+      const std::vector<char> reachable = reachable_nonterminals(grammar, starts);
+      const auto reached = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), 1));
+      if (reached <= most_reached) continue;
+      ShapeProduction axiom = production(kNone, set);
+      if (!adds_up(axiom, set, mesh_.area()) || opens_holes(axiom)) continue;
+      grammar.axiom = std::move(axiom);
+      most_reached = reached;
+    }
     if (opens_holes(grammar.axiom)) {  // even the exemplar rebuilt from its pieces would have holes
       grammar = {};
       stats.axiom_with_holes = true;
     }
+    stats.unreachable_nonterminals = drop_unreachable_nonterminals(grammar);
   }
 
   // Whether `p`'s terminal holds a triangle that cleaning drops while the exemplar is closed: it

@@ -93,6 +93,9 @@ struct ContextFreeStats {
   /// it would open a hole), and whether the axiom did too (then the grammar is left empty).
   std::size_t productions_with_holes = 0;
   bool axiom_with_holes = false;
+  /// Non-terminals dropped because no derivation reaches them from the axiom (their locations
+  /// lie in alternatives that the axiom's independent set of sites left out).
+  std::size_t unreachable_nonterminals = 0;
 };
 
 /// Builds the context-free grammar of a prepared mesh from its docking sites. Deterministic

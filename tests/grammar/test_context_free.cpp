@@ -15,6 +15,7 @@
 #include "synthesis/verify.h"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +121,36 @@ TEST_CASE("context-free grammar: exemplar productions rebuild the exemplar", "[g
     INFO(asset);
     const Analysed a = analyse(asset, parameters);
     REQUIRE_FALSE(a.grammar.empty());
+    check_rebuilds_exemplar(a);
+  }
+}
+
+TEST_CASE("context-free grammar: every non-terminal can be reached from the axiom", "[grammar][context_free]") {
+  // Sites that conflict with the sites the axiom uses made non-terminals no derivation could
+  // use (fence 2 of 4, shelf 2 of 4); they are dropped.
+  for (const auto& [asset, parameters] : std::vector<std::pair<std::string, nlohmann::json>>{
+           {"fence", {{"n", 4}}}, {"shelf", {{"columns", 3}, {"rows", 4}}}, {"pipe_tree", {{"depth", 3}}}}) {
+    INFO(asset);
+    const Analysed a = analyse(asset, parameters);
+    REQUIRE_FALSE(a.grammar.empty());
+    std::vector<char> reached(a.grammar.nonterminals.size(), 0);
+    std::vector<std::size_t> stack;
+    for (const dg::ChildSlot& slot : a.grammar.axiom.children) stack.push_back(slot.nonterminal);
+    while (!stack.empty()) {
+      const std::size_t n = stack.back();
+      stack.pop_back();
+      if (reached[n]) continue;
+      reached[n] = 1;
+      for (const dg::ShapeProduction& p : a.grammar.productions)
+        if (p.lhs == n)
+          for (const dg::ChildSlot& slot : p.children) stack.push_back(slot.nonterminal);
+    }
+    CHECK(std::count(reached.begin(), reached.end(), 1) == static_cast<long>(reached.size()));
+    for (std::size_t n = 0; n < a.grammar.nonterminals.size(); ++n) {
+      CHECK(a.grammar.nonterminals[n].name == fmt::format("N{}", n + 1));
+      CHECK(std::any_of(a.grammar.productions.begin(), a.grammar.productions.end(),
+                        [&](const dg::ShapeProduction& p) { return p.lhs == n; }));
+    }
     check_rebuilds_exemplar(a);
   }
 }
@@ -236,15 +267,16 @@ TEST_CASE("context-free grammar: a fence whose units repeat only to 2e-3 eps kee
     p.x() += 2e-3 * eps * std::sin(7.3 * p.x() / eps + 3.1 * p.y() / eps + 1.7 * p.z() / eps);
   const Analysed a = analyse_model(std::move(shifted));
   REQUIRE_FALSE(a.grammar.empty());
-  // The shifts change which symmetries and sites are found a little (one class of the exact
-  // fence splits in two), but every location the exact fence uses stays in use.
-  auto locations = [](const dg::ContextFreeGrammar& g) {
-    std::size_t sum = 0;
-    for (const dg::ShapeNonterminal& n : g.nonterminals) sum += n.sites;
-    return sum;
-  };
+  // The shifts change which symmetries and sites are found a little (73 against 79
+  // symmetries), so the non-terminals differ from the exact fence's; at least as many are
+  // found, and most of their locations fit only beyond 1e-4 eps (the old limit).
   CHECK(a.grammar.nonterminals.size() >= reference.grammar.nonterminals.size());
-  CHECK(locations(a.grammar) == locations(reference.grammar));
+  std::size_t locations = 0, approximate = 0;
+  for (const dg::ShapeNonterminal& n : a.grammar.nonterminals) {
+    locations += n.sites;
+    if (n.seam_misfit > 1e-4 * eps) approximate += n.sites;
+  }
+  CHECK(2 * approximate > locations);
   double largest_misfit = 0.0;
   for (const dg::ShapeNonterminal& n : a.grammar.nonterminals) largest_misfit = std::max(largest_misfit, n.seam_misfit);
   CHECK(largest_misfit > 1e-4 * eps);  // the shifts show in the seams

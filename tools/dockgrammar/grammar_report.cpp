@@ -37,11 +37,17 @@ std::string unpaired_sites_text(const AnalysisReport& report) {
 
 // "; 12 production(s) were dropped because ..." when context-free rules were dropped for
 // opening holes in a closed model; empty otherwise.
-std::string holes_text(const ContextFreeStats& stats) {
-  if (stats.productions_with_holes == 0 && !stats.axiom_with_holes) return "";
-  return fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they would "
-                     "open holes in the closed model)",
-                     stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
+std::string dropped_rules_text(const ContextFreeStats& stats) {
+  std::string text;
+  if (stats.productions_with_holes > 0 || stats.axiom_with_holes)
+    text += fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they "
+                        "would open holes in the closed model)",
+                        stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
+  if (stats.unreachable_nonterminals > 0)
+    text += fmt::format("; {} non-terminal(s) were dropped because no derivation reaches them from the axiom (their sites "
+                        "conflict with the sites the axiom uses)",
+                        stats.unreachable_nonterminals);
+  return text;
 }
 
 // A note on the units a direction keeps once in its head and tail, e.g. " (1 unit kept once in
@@ -145,7 +151,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
                             report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                            unpaired_sites_text(report) + holes_text(report.context_free));
+                            unpaired_sites_text(report) + dropped_rules_text(report.context_free));
   md += "| non-terminal | exemplar sites | productions | seam misfit (eps) |\n|---|---|---|---|\n";
   for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
     md += fmt::format("| {} | {} | {} | {:.1e} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
@@ -154,6 +160,10 @@ std::string context_free_markdown(const AnalysisReport& report) {
   md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
                     "1e-2 eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
                     seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
+  if (report.context_free.unreachable_nonterminals > 0)
+    md += fmt::format("\n{} more non-terminal(s) were dropped: no derivation reaches them from the axiom (their sites "
+                      "conflict with the sites the axiom uses).\n",
+                      report.context_free.unreachable_nonterminals);
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
                     model_stem(report));
@@ -229,7 +239,7 @@ std::string analysis_text(const AnalysisReport& report) {
   if (cf.empty())
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                       unpaired_sites_text(report) + holes_text(report.context_free));
+                       unpaired_sites_text(report) + dropped_rules_text(report.context_free));
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
                        cf.productions.size(), generate_rules_text(report));
