@@ -19,7 +19,7 @@ namespace {
 
 constexpr const char* kMissing =
     "grids of pure rotations (no slide along the axis) are not built; docking sites that slide along themselves, or whose docker "
-    "cut at one location does not fit the seam at the other (approximate symmetry), give no context-free production";
+    "cut at one location lies more than 1e-2 eps from the seam at the other, give no context-free production";
 
 // NAME of the model's NAME.grammar.json, NAME.report.md and pictures.
 std::string model_stem(const AnalysisReport& report) { return report.grammar_path.stem().stem().string(); }
@@ -36,7 +36,7 @@ std::string unpaired_sites_text(const AnalysisReport& report) {
 }
 
 // "; 12 production(s) were dropped because ..." when context-free rules were dropped for
-// opening holes in a closed model; empty otherwise.
+// opening holes in a closed model or for being unreachable from the axiom; empty otherwise.
 std::string dropped_rules_text(const ContextFreeStats& stats) {
   std::string text;
   if (stats.productions_with_holes > 0 || stats.axiom_with_holes)
