@@ -48,7 +48,7 @@ std::vector<char> reachable_nonterminals(const ContextFreeGrammar& grammar, std:
 }
 
 // Drops the non-terminals that no derivation reaches from the axiom, with their productions,
-// and numbers the others densely again (N1, N2, ... in their order). Returns how many went.
+// renumbers the others densely and names them N1, N2, ... in their order. Returns how many went.
 std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
   std::vector<std::size_t> starts;
   for (const ChildSlot& slot : grammar.axiom.children) starts.push_back(slot.nonterminal);
@@ -497,7 +497,7 @@ class Builder {
           n.kept = false;
           continue;
         }
-        const double misfit = seam_misfit(curve(n), reference, tolerance, surface_.eps());
+        const double misfit = i == members.front() ? 0.0 : seam_misfit(curve(n), reference, tolerance, surface_.eps());
         n.kept = misfit <= tolerance;
         if (n.kept) class_misfit_[k] = std::max(class_misfit_[k], misfit);
       }
@@ -645,7 +645,7 @@ class Builder {
 
   void make_productions(ContextFreeGrammar& grammar, ContextFreeStats& stats) {
     taken_.assign(cut_.triangles.size(), 0);
-    // Non-terminals that survived, numbered densely.
+    // Non-terminals that survived, indexed densely (named once the unreachable ones are gone).
     class_index_.assign(class_nodes_.size(), kNone);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       std::size_t kept = 0;
@@ -653,7 +653,6 @@ class Builder {
       if (kept == 0) continue;
       class_index_[k] = grammar.nonterminals.size();
       ShapeNonterminal nt;
-      nt.name = fmt::format("N{}", grammar.nonterminals.size() + 1);
       nt.seam = class_seam_[k];
       nt.sites = kept;
       nt.seam_misfit = class_misfit_[k];

@@ -3,6 +3,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "grammar/seam_curve.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/docking_site_picture.h"
 #include "tools/dockgrammar/pictures.h"
@@ -17,9 +18,13 @@
 namespace dg::cli {
 namespace {
 
-constexpr const char* kMissing =
-    "grids of pure rotations (no slide along the axis) are not built; docking sites that slide along themselves, or whose docker "
-    "cut at one location lies more than 1e-2 eps from the seam at the other, give no context-free production";
+// What analyze does not build yet (one sentence, for the summary, the JSON and the report).
+std::string missing_text() {
+  return fmt::format("grids of pure rotations (no slide along the axis) are not built; docking sites that slide along "
+                     "themselves, or whose docker cut at one location lies more than {:g} eps from the seam at the other, "
+                     "give no context-free production",
+                     kSeamFitFraction);
+}
 
 // NAME of the model's NAME.grammar.json, NAME.report.md and pictures.
 std::string model_stem(const AnalysisReport& report) { return report.grammar_path.stem().stem().string(); }
@@ -158,8 +163,8 @@ std::string context_free_markdown(const AnalysisReport& report) {
                       std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }),
                       cf.nonterminals[n].seam_misfit / report.grammar.eps);
   md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
-                    "1e-2 eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
-                    seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
+                    "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
+                    kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   if (report.context_free.unreachable_nonterminals > 0)
     md += fmt::format("\n{} more non-terminal(s) were dropped: no derivation reaches them from the axiom (their sites "
                       "conflict with the sites the axiom uses).\n",
@@ -247,7 +252,7 @@ std::string analysis_text(const AnalysisReport& report) {
   std::string pictures;
   for (const std::filesystem::path& png : report.pictures) pictures += (pictures.empty() ? "" : ", ") + png.filename().string();
   if (!pictures.empty()) out += fmt::format("pictures (and coloured .ply of each): {}\n", pictures);
-  out += fmt::format("not built: {}\n", kMissing);
+  out += fmt::format("not built: {}\n", missing_text());
   return out;
 }
 
@@ -294,7 +299,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"report_file", report.report_path.string()},
           {"pictures", pictures_json(report)},
           {"timings_s", timings_json(report)},
-          {"missing", kMissing}};
+          {"missing", missing_text()}};
 }
 
 void write_analysis_report(const AnalysisReport& report) {
@@ -338,7 +343,7 @@ void write_analysis_report(const AnalysisReport& report) {
     md += fmt::format("\nAllowed counts: {}. Picture: `{}.png`.\n\n", ranges, model_stem(report) + "." + grid.rule.name);
   }
   md += context_free_markdown(report);
-  md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", kMissing);
+  md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", missing_text());
   const nlohmann::json timings = timings_json(report);
   for (const auto& [stage, seconds] : timings.items()) md += fmt::format("- {}: {:.3f}\n", stage, seconds.get<double>());
   write_file_atomically(report.report_path, [&](std::ostream& out) { out << md; }, false);
