@@ -9,6 +9,7 @@
 #include "grammar/seam_curve.h"
 #include "grammar/seam_cut.h"
 #include "grammar/random.h"
+#include "grammar/same_production.h"
 #include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
 
@@ -185,62 +186,10 @@ bool orient_towards_docker(const VoxelSurface& surface, const Node& node, const 
   return positive >= 0.8 * static_cast<double>(total);
 }
 
-// Every vertex of `a` lies within `tolerance` (model units) of a vertex of `b`.
-bool vertices_covered(const TriangleMesh& a, const TriangleMesh& b, double tolerance) {
-  using Key = std::array<std::int64_t, 3>;
-  auto key = [&](const Vec3& p) {
-    return Key{static_cast<std::int64_t>(std::floor(p.x() / tolerance)), static_cast<std::int64_t>(std::floor(p.y() / tolerance)),
-               static_cast<std::int64_t>(std::floor(p.z() / tolerance))};
-  };
-  std::map<Key, std::vector<std::uint32_t>> grid;
-  for (std::uint32_t v = 0; v < b.positions.size(); ++v) grid[key(b.positions[v])].push_back(v);
-  for (const Vec3& p : a.positions) {
-    const Key k = key(p);
-    bool near = false;
-    for (std::int64_t dx = -1; dx <= 1 && !near; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && !near; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && !near; ++dz) {
-          const auto cell = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (cell == grid.end()) continue;
-          for (std::uint32_t v : cell->second) near = near || (b.positions[v] - p).norm() <= tolerance;
-        }
-    if (!near) return false;
-  }
-  return true;
-}
-
 // Whether cleaning would drop a triangle of `mesh` as degenerate: a piece holding one opens a
 // hole wherever it is placed.
 bool has_degenerate_triangle(const TriangleMesh& mesh) {
   return std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) { return is_degenerate(mesh, t); });
-}
-
-// The material indices of `mesh`'s triangles, ascending.
-std::vector<std::uint32_t> sorted_materials(const TriangleMesh& mesh) {
-  std::vector<std::uint32_t> materials = mesh.materials;
-  std::sort(materials.begin(), materials.end());
-  return materials;
-}
-
-// Equal up to `tolerance` (model units): same left side, same terminal triangles (compared by
-// count, area, bounding box, vertices and how many triangles carry each material) and the same
-// child slots with the same exemplar productions.
-bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance) {
-  if (a.lhs != b.lhs || a.terminal.triangles.size() != b.terminal.triangles.size() || a.children.size() != b.children.size())
-    return false;
-  if (sorted_materials(a.terminal) != sorted_materials(b.terminal)) return false;
-  if (std::abs(a.terminal.area() - b.terminal.area()) > tolerance * tolerance) return false;
-  if (!a.terminal.triangles.empty()) {
-    const BoundingBox ba = a.terminal.bounds(), bb = b.terminal.bounds();
-    if ((ba.min - bb.min).norm() > tolerance || (ba.max - bb.max).norm() > tolerance) return false;
-  }
-  for (std::size_t i = 0; i < a.children.size(); ++i) {
-    const ChildSlot &x = a.children[i], &y = b.children[i];
-    if (x.nonterminal != y.nonterminal || x.original_production != y.original_production ||
-        !same_motion(x.placement, y.placement, Vec3::Zero(), tolerance))
-      return false;
-  }
-  return vertices_covered(a.terminal, b.terminal, tolerance) && vertices_covered(b.terminal, a.terminal, tolerance);
 }
 
 class Builder {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace dg {
 
@@ -26,13 +27,24 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   // otherwise; a grammar whose only alternatives turn pieces over gives grid variants upright.
   const bool use_context_free = options.rules == VariantRules::context_free ||
                                 (options.rules == VariantRules::automatic && has_context_free &&
-                                 (grammar.grids.empty() || derivation_has_choice(grammar.context_free, options.derivation)));
+                                 derivation_has_choice(grammar.context_free, options.derivation));
   if (use_context_free) {
     plan.context_free = true;
     return plan;
   }
-  if (grammar.grids.empty())
-    throw InputError("the grammar has no rules to vary (no grid and no context-free rule was found in the exemplar)");
+  if (grammar.grids.empty()) {
+    if (!has_context_free)
+      throw InputError("the grammar has no rules to vary (no grid and no context-free rule was found in the exemplar)");
+    // Automatic, and the context-free rules offer no choice: every variant would be the exemplar.
+    ShapeDerivationOptions free = options.derivation;
+    free.up.reset();
+    throw InputError(std::string("nothing in the grammar varies the exemplar: it has no grid, and no context-free slot "
+                                 "has a production other than the exemplar's") +
+                     (options.derivation.up && derivation_has_choice(grammar.context_free, free)
+                          ? " that keeps the model upright (--orientation free lets pieces turn over)"
+                          : " (productions of one shape count as one however they are triangulated)") +
+                     "; --rules context-free rebuilds the exemplar");
+  }
   if (grammar.grids.size() > 1) throw InputError("variants of grammars with several grids are not supported yet");
   if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   Random random(plan.seed);

@@ -11,7 +11,8 @@
 namespace dg {
 
 /// Which rules make variants. automatic: context-free rules when the grammar has them and some
-/// slot has a choice under the derivation options (see derivation_has_choice), else the grid.
+/// slot has a choice under the derivation options (see derivation_has_choice), else the grid;
+/// neither is an input error (every variant would be the exemplar).
 enum class VariantRules { automatic, grid, context_free };
 
 struct VariantOptions {

@@ -105,3 +105,24 @@ TEST_CASE("context-free variants are never the unchanged exemplar when the gramm
     CHECK(std::abs(variant.mesh.area() - exemplar_area) > 1e-3 * exemplar_area);
   }
 }
+
+TEST_CASE("automatic variants of a grammar where nothing varies are an input error, not copies of the exemplar",
+          "[synthesis][variants]") {
+  // The facade's context-free rules without its grid, derived to depth 0: no slot has a choice.
+  dg::ShapeGrammar grammar = dg::test::asset_grammar("facade", {{"columns", 3}, {"rows", 4}}, true);
+  grammar.grids.clear();
+  dg::VariantOptions options;
+  options.derivation.max_depth = 0;
+  REQUIRE_FALSE(grammar.context_free.empty());
+  REQUIRE_FALSE(dg::derivation_has_choice(grammar.context_free, options.derivation));
+  CHECK_THROWS_AS(dg::plan_variant(grammar, 1, 0, options), dg::InputError);
+  // Asked for explicitly, the context-free rules rebuild the exemplar.
+  options.rules = dg::VariantRules::context_free;
+  const dg::VariantPlan plan = dg::plan_variant(grammar, 1, 0, options);
+  CHECK(plan.context_free);
+  CHECK(dg::build_variant(grammar, plan, options).mesh.area() == Approx(grammar.exemplar.area()).epsilon(1e-3));
+  // With a choice, automatic variants come from the context-free rules again.
+  options.rules = dg::VariantRules::automatic;
+  options.derivation.max_depth = 24;
+  CHECK(dg::plan_variant(grammar, 1, 0, options).context_free);
+}

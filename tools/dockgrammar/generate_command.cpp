@@ -53,7 +53,7 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 100.0));
-  command->add_option("--rules", options->rules, "auto (context-free rules when they can change the exemplar under --orientation, else the grid), grid or context-free")
+  command->add_option("--rules", options->rules, "auto (context-free rules when they can change the exemplar under --orientation, else the grid; neither is an error), grid or context-free (with no choice: rebuilds the exemplar)")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "grid", "context-free"}));
   command->add_option("--max-depth", options->max_depth, "Context-free: deeper slots get the exemplar's production")

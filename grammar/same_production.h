@@ -1,0 +1,18 @@
+#pragma once
+// Whether two productions of a context-free grammar are the same: an exemplar repeats a part
+// with a different triangulation here and there, and a production cut from such a copy offers
+// no variation.
+
+#include "grammar/context_free.h"
+
+namespace dg {
+
+/// True when `a` and `b` are equal up to `tolerance` (model units): the same left side, the
+/// same child slots (non-terminal, exemplar production, placement within tolerance) and
+/// terminals of the same shape however they are triangulated: the same area of each material
+/// (within tolerance^2), bounding boxes within tolerance, and surfaces that cover each other on
+/// cells of tolerance / 2 (every cell one surface passes through touches one the other passes
+/// through, so they lie within about 1.7 tolerance of each other).
+bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance);
+
+}  // namespace dg
