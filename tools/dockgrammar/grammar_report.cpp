@@ -138,6 +138,21 @@ nlohmann::json productions_json(const ContextFreeGrammar& g) {
   return out;
 }
 
+// Which rules `generate` uses by default (upright orientation about the grammar's up axis).
+std::string generate_rules_text(const AnalysisReport& report) {
+  ShapeDerivationOptions upright;
+  upright.up = picture_options(report.grammar.exemplar, report.grammar.up_axis).camera.up.normalized();
+  if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
+  if (!derivation_has_choice(report.grammar.context_free, ShapeDerivationOptions{}))
+    return std::string("no non-terminal has a second production of another shape (its locations are copies of one "
+                       "another), so they only rebuild the exemplar") +
+           (report.grammar.grids.empty() ? ": generate has nothing to vary" : ": generate varies the grid");
+  if (report.grammar.grids.empty())
+    return "none changes the model while keeping its pieces upright: generate --orientation free uses them";
+  return "none changes the model while keeping its pieces upright, so generate varies the grid; --orientation free "
+         "--rules context-free uses them";
+}
+
 std::string context_free_markdown(const AnalysisReport& report) {
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
@@ -165,6 +180,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
   md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
                     "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
                     kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
+  md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
   if (report.context_free.unreachable_nonterminals > 0)
     md += fmt::format("\n{} more non-terminal(s) were dropped: no derivation reaches them from the axiom (their sites "
                       "conflict with the sites the axiom uses).\n",
@@ -181,17 +197,6 @@ std::string context_free_markdown(const AnalysisReport& report) {
   md += line("axiom", cf.axiom);
   for (const ShapeProduction& p : cf.productions) md += line(cf.nonterminals[p.lhs].name, p);
   return md + "\n";
-}
-
-// Which rules `generate` uses by default (upright orientation about the grammar's up axis).
-std::string generate_rules_text(const AnalysisReport& report) {
-  ShapeDerivationOptions upright;
-  upright.up = picture_options(report.grammar.exemplar, report.grammar.up_axis).camera.up.normalized();
-  if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
-  if (report.grammar.grids.empty())
-    return "none changes the model while keeping its pieces upright: generate --orientation free uses them";
-  return "none changes the model while keeping its pieces upright, so generate varies the grid; --orientation free "
-         "--rules context-free uses them";
 }
 
 // The model's materials and whether symmetries had to respect them.
