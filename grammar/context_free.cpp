@@ -205,6 +205,7 @@ class Builder {
     collect_nodes(sites, stats);
     assign_classes();
     choose_seams();
+    screen_fit();
     cut_model();
     cut_pieces();
     check_fit();
@@ -349,7 +350,7 @@ class Builder {
       report(kCutShare * static_cast<double>(done++) / total);
       const std::vector<char> touching = triangles_touching(n.site);
       std::vector<char> zone(cut_.triangles.size(), 0);
-      for (std::size_t t = 0; t < cut_.triangles.size(); ++t) zone[t] = touching[origin_[t]] && near_band(n, t);
+      for (std::size_t t = 0; t < cut_.triangles.size(); ++t) zone[t] = touching[origin_[t]] && near_band(cut_, n, t);
       ZoneCut cut = cut_zone(cut_, zone, seam_planes(class_seam_[n.klass], n.frame), tolerance, seam_face_filter(n));
       for (std::uint32_t& o : cut.origin) o = origin_[o];
       cut_ = std::move(cut.mesh);
@@ -371,11 +372,62 @@ class Builder {
     };
   }
 
+  // The seam curve of `node` cut alone: the exemplar triangles around its site and docker cut
+  // along its own seam only, in the non-terminal's frame. The same curve as in the cumulative
+  // cut (other locations' cuts only add vertices along it), at a fraction of the cost.
+  std::vector<Segment> own_seam_curve(const Node& node) const {
+    Cells cells = node.docker;
+    cells.insert(cells.end(), node.site.begin(), node.site.end());
+    const std::vector<char> around = triangles_touching(cells), in_band = triangles_touching(node.site);
+    std::vector<std::size_t> triangles;
+    for (std::size_t t = 0; t < around.size(); ++t)
+      if (around[t]) triangles.push_back(t);
+    const TriangleMesh local = submesh(mesh_, triangles);
+    std::vector<char> zone(local.triangles.size(), 0);
+    for (std::size_t t = 0; t < local.triangles.size(); ++t) zone[t] = in_band[triangles[t]] && near_band(local, node, t);
+    const ZoneCut cut = cut_zone(local, zone, seam_planes(class_seam_[node.klass], node.frame),
+                                 kCutSnapFraction * surface_.eps(), seam_face_filter(node));
+    std::vector<std::uint32_t> piece;
+    std::vector<char> inside(cut.mesh.triangles.size(), 0);
+    for (std::uint32_t t = 0; t < cut.mesh.triangles.size(); ++t)
+      if (in_docker(cut.mesh, node, t)) piece.push_back(t), inside[t] = 1;
+    std::vector<Segment> segments = seam_segments(cut.mesh, triangles_across(cut.mesh), piece, inside);
+    for (Segment& segment : segments) segment = {node.frame_inverse.apply(segment[0]), node.frame_inverse.apply(segment[1])};
+    return segments;
+  }
+
+  // Before the cumulative cut: locations whose own seam curve lies more than twice the fit
+  // limit from their class's first location's are dropped, and so are classes left with fewer
+  // than two locations, so the whole model is not cut for locations check_fit would drop (it
+  // decides on the cumulative cut, within the limit itself).
+  void screen_fit() {
+    const double limit = 2.0 * kSeamFitFraction * surface_.eps();
+    for (const std::vector<std::size_t>& members : class_nodes_) {
+      std::size_t kept = 0;
+      std::vector<Segment> reference;
+      for (std::size_t i : members) {
+        Node& n = nodes_[i];
+        if (!n.kept || !nodes_[members.front()].kept) {
+          n.kept = false;
+          continue;
+        }
+        if (i == members.front()) {
+          reference = own_seam_curve(n);
+        } else {
+          n.kept = !reference.empty() && seam_misfit(own_seam_curve(n), reference, limit, surface_.eps()) <= limit;
+        }
+        kept += n.kept ? 1 : 0;
+      }
+      if (kept < 2)
+        for (std::size_t i : members) nodes_[i].kept = false;
+    }
+  }
+
   // Whether the box around triangle t of the cut model holds a band cell of `node` (true for
   // triangles spanning many voxels).
-  bool near_band(const Node& node, std::size_t t) const {
+  bool near_band(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
     BoundingBox box;
-    for (const Vec3& p : cut_.corners(t)) box.add(p);
+    for (const Vec3& p : mesh.corners(t)) box.add(p);
     const VoxelCoord lo = surface_.voxel_of(box.min), hi = surface_.voxel_of(box.max);
     if (static_cast<std::int64_t>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64) return true;
     for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
@@ -389,8 +441,8 @@ class Builder {
 
   // Whether triangle t of the cut model lies in the docker of `node` (on the docker side of its
   // seam where it crosses the band).
-  bool in_docker(const Node& node, std::size_t t) const {
-    const auto corners = cut_.corners(t);
+  bool in_docker(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
+    const auto corners = mesh.corners(t);
     const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
     const std::int64_t found = nearest_cell(surface_, centroid);
     if (found < 0) return false;
@@ -415,7 +467,7 @@ class Builder {
       for (std::size_t o = 0; o < touching.size(); ++o)
         if (touching[o])
           for (std::uint32_t t : pieces_of_original[o])
-            if (in_docker(n, t)) n.piece.push_back(t);
+            if (in_docker(cut_, n, t)) n.piece.push_back(t);
       std::sort(n.piece.begin(), n.piece.end());
     }
   }
