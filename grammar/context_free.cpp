@@ -332,6 +332,45 @@ class Builder {
 
   void report(double fraction) const { report_progress(progress_, "context-free rules", fraction); }
 
+  // How far seam cuts move vertices onto their planes (model units).
+  double snap_distance() const { return kCutSnapFraction * surface_.eps(); }
+
+  // `segments` (model frame) moved into the non-terminal frame of `node`.
+  static std::vector<Segment> in_frame(std::vector<Segment> segments, const Node& node) {
+    for (Segment& s : segments) s = {node.frame_inverse.apply(s[0]), node.frame_inverse.apply(s[1])};
+    return segments;
+  }
+
+  // Keeps, in each class, the locations whose seam curve (`curve_of`, in the non-terminal's
+  // frame) lies within `limit` (model units) of the first location's. A class whose first
+  // location is dropped, or that is left with fewer than two locations (a non-terminal needs an
+  // alternative), loses them all. Returns each class's largest misfit kept.
+  template <class CurveOf>
+  std::vector<double> keep_fitting_locations(const CurveOf& curve_of, double limit) {
+    std::vector<double> largest(class_nodes_.size(), 0.0);
+    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      const std::vector<std::size_t>& members = class_nodes_[k];
+      const Node& root = nodes_[members.front()];
+      const std::vector<Segment> reference = root.kept ? curve_of(root) : std::vector<Segment>{};
+      std::size_t kept = 0;
+      for (std::size_t i : members) {
+        Node& n = nodes_[i];
+        if (n.kept && !reference.empty()) {
+          // An empty curve never fits: seam_misfit is infinite when the reference has no match.
+          const double misfit = i == members.front() ? 0.0 : seam_misfit(curve_of(n), reference, limit, surface_.eps());
+          n.kept = misfit <= limit;
+          if (n.kept) largest[k] = std::max(largest[k], misfit);
+        } else {
+          n.kept = false;
+        }
+        kept += n.kept ? 1 : 0;
+      }
+      if (kept < 2)
+        for (std::size_t i : members) nodes_[i].kept = false;
+    }
+    return largest;
+  }
+
   std::size_t kept_nodes() const {
     return static_cast<std::size_t>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.kept; }));
   }
@@ -342,7 +381,7 @@ class Builder {
     cut_ = mesh_;
     origin_.resize(mesh_.triangles.size());
     std::iota(origin_.begin(), origin_.end(), 0u);
-    const double tolerance = kCutSnapFraction * surface_.eps();
+    const double tolerance = snap_distance();
     const double total = static_cast<double>(std::max<std::size_t>(1, kept_nodes()));
     std::size_t done = 0;
     for (const Node& n : nodes_) {
@@ -386,14 +425,12 @@ class Builder {
     std::vector<char> zone(local.triangles.size(), 0);
     for (std::size_t t = 0; t < local.triangles.size(); ++t) zone[t] = in_band[triangles[t]] && near_band(local, node, t);
     const ZoneCut cut = cut_zone(local, zone, seam_planes(class_seam_[node.klass], node.frame),
-                                 kCutSnapFraction * surface_.eps(), seam_face_filter(node));
+                                 snap_distance(), seam_face_filter(node));
     std::vector<std::uint32_t> piece;
     std::vector<char> inside(cut.mesh.triangles.size(), 0);
     for (std::uint32_t t = 0; t < cut.mesh.triangles.size(); ++t)
       if (in_docker(cut.mesh, node, t)) piece.push_back(t), inside[t] = 1;
-    std::vector<Segment> segments = seam_segments(cut.mesh, triangles_across(cut.mesh), piece, inside);
-    for (Segment& segment : segments) segment = {node.frame_inverse.apply(segment[0]), node.frame_inverse.apply(segment[1])};
-    return segments;
+    return in_frame(seam_segments(cut.mesh, triangles_across(cut.mesh), piece, inside), node);
   }
 
   // Before the cumulative cut: locations whose own seam curve lies more than twice the fit
@@ -401,26 +438,7 @@ class Builder {
   // than two locations, so the whole model is not cut for locations check_fit would drop (it
   // decides on the cumulative cut, within the limit itself).
   void screen_fit() {
-    const double limit = 2.0 * kSeamFitFraction * surface_.eps();
-    for (const std::vector<std::size_t>& members : class_nodes_) {
-      std::size_t kept = 0;
-      std::vector<Segment> reference;
-      for (std::size_t i : members) {
-        Node& n = nodes_[i];
-        if (!n.kept || !nodes_[members.front()].kept) {
-          n.kept = false;
-          continue;
-        }
-        if (i == members.front()) {
-          reference = own_seam_curve(n);
-        } else {
-          n.kept = !reference.empty() && seam_misfit(own_seam_curve(n), reference, limit, surface_.eps()) <= limit;
-        }
-        kept += n.kept ? 1 : 0;
-      }
-      if (kept < 2)
-        for (std::size_t i : members) nodes_[i].kept = false;
-    }
+    keep_fitting_locations([&](const Node& n) { return own_seam_curve(n); }, 2.0 * kSeamFitFraction * surface_.eps());
   }
 
   // Whether the box around triangle t of the cut model holds a band cell of `node` (true for
@@ -482,32 +500,9 @@ class Builder {
       for (std::uint32_t t : n.piece) inside[t] = 1;
       std::vector<Segment> segments = seam_segments(cut_, across, n.piece, inside);
       for (std::uint32_t t : n.piece) inside[t] = 0;
-      const RigidTransform back = n.frame.inverse();
-      for (Segment& s : segments) s = {back.apply(s[0]), back.apply(s[1])};
-      return segments;
+      return in_frame(std::move(segments), n);
     };
-    const double tolerance = kSeamFitFraction * surface_.eps();
-    class_misfit_.assign(class_nodes_.size(), 0.0);
-    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
-      const std::vector<std::size_t>& members = class_nodes_[k];
-      const Node& root = nodes_[members.front()];
-      const std::vector<Segment> reference = root.kept ? curve(root) : std::vector<Segment>{};
-      for (std::size_t i : members) {
-        Node& n = nodes_[i];
-        if (!n.kept || reference.empty() || n.piece.empty()) {
-          n.kept = false;
-          continue;
-        }
-        const double misfit = i == members.front() ? 0.0 : seam_misfit(curve(n), reference, tolerance, surface_.eps());
-        n.kept = misfit <= tolerance;
-        if (n.kept) class_misfit_[k] = std::max(class_misfit_[k], misfit);
-      }
-      // A non-terminal needs at least two locations to offer an alternative.
-      std::size_t kept = 0;
-      for (std::size_t i : members) kept += nodes_[i].kept ? 1 : 0;
-      if (kept < 2)
-        for (std::size_t i : members) nodes_[i].kept = false;
-    }
+    class_misfit_ = keep_fitting_locations(curve, kSeamFitFraction * surface_.eps());
   }
 
   // The cuts split triangles along whole voxel planes; fragments of one exemplar triangle that
@@ -525,7 +520,7 @@ class Builder {
       label[t] = ids.emplace(holders[t], static_cast<std::uint32_t>(ids.size())).first->second;
     std::vector<char> corners(cut_.positions.size(), 0);
     std::fill(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(mesh_.positions.size()), 1);
-    MergedFragments merged = merge_fragments(cut_, origin_, label, corners, {.moved_distance = kCutSnapFraction * surface_.eps()});
+    MergedFragments merged = merge_fragments(cut_, origin_, label, corners, {.moved_distance = snap_distance()});
     std::vector<std::uint32_t> origin(merged.mesh.triangles.size());
     for (Node& n : nodes_) n.piece.clear();
     for (std::uint32_t t = 0; t < merged.mesh.triangles.size(); ++t) {
@@ -619,7 +614,7 @@ class Builder {
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
     const TriangleMesh merged =
         merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners,
-                        {.straighten_open_borders = true, .moved_distance = kCutSnapFraction * surface_.eps()})
+                        {.straighten_open_borders = true, .moved_distance = snap_distance()})
             .mesh;
     return without_unused_vertices(merged);
   }

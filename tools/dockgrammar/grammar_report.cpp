@@ -40,6 +40,13 @@ std::string unpaired_sites_text(const AnalysisReport& report) {
                      report.docking.sites.size() - accounted, ContextFreeOptions{}.max_nodes);
 }
 
+// "N non-terminal(s) were dropped because ..." for non-terminals no derivation reaches.
+std::string unreachable_text(const ContextFreeStats& stats) {
+  return fmt::format("{} non-terminal(s) were dropped because no derivation reaches them from the axiom (their sites "
+                     "conflict with the sites the axiom uses)",
+                     stats.unreachable_nonterminals);
+}
+
 // "; 12 production(s) were dropped because ..." when context-free rules were dropped for
 // opening holes in a closed model or for being unreachable from the axiom; empty otherwise.
 std::string dropped_rules_text(const ContextFreeStats& stats) {
@@ -48,10 +55,7 @@ std::string dropped_rules_text(const ContextFreeStats& stats) {
     text += fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they "
                         "would open holes in the closed model)",
                         stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
-  if (stats.unreachable_nonterminals > 0)
-    text += fmt::format("; {} non-terminal(s) were dropped because no derivation reaches them from the axiom (their sites "
-                        "conflict with the sites the axiom uses)",
-                        stats.unreachable_nonterminals);
+  if (stats.unreachable_nonterminals > 0) text += "; " + unreachable_text(stats);
   return text;
 }
 
@@ -181,10 +185,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
                     "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
                     kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
-  if (report.context_free.unreachable_nonterminals > 0)
-    md += fmt::format("\n{} more non-terminal(s) were dropped: no derivation reaches them from the axiom (their sites "
-                      "conflict with the sites the axiom uses).\n",
-                      report.context_free.unreachable_nonterminals);
+  if (report.context_free.unreachable_nonterminals > 0) md += "\n" + unreachable_text(report.context_free) + ".\n";
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
                     model_stem(report));
