@@ -25,6 +25,10 @@ using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, FaceInfo>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
                                                        CGAL::Exact_predicates_tag>;
 
+// Cosine between unit normals below which a triangle faces against a region (about 0.1 degree
+// from opposite).
+constexpr double kBackFace = -1.0 + 1e-6;
+
 std::uint64_t key_of(std::uint32_t a, std::uint32_t b) {
   const auto [lo, hi] = std::minmax(a, b);
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
@@ -76,9 +80,15 @@ double area_of(const std::vector<Vec3>& positions, const Triangle& t) {
 }
 
 // Re-triangulates one region (triangles of `mesh`) keeping the flagged vertices of its border;
-// false (nothing added) when the result would not cover the region exactly.
+// false (nothing added) when the result would not cover the region exactly, or when one of its
+// new edges (inside it, or a straightened piece of its border) is an edge of a triangle of
+// another region that does not face the other way in the same plane (`elsewhere(a, b, normal)`,
+// `normal` the region's unit normal): a messy mesh can have a part touching a face along a line
+// the face's own triangles do not follow, and the new edge would join that part's edge into a
+// non-manifold one. The back face of a double-sided face may share it: the two become twins.
+template <typename EdgeTest>
 bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& region, const std::vector<char>& interior_edge,
-                   const std::vector<char>& kept, double moved_distance, std::vector<Triangle>& out) {
+                   const std::vector<char>& kept, double moved_distance, const EdgeTest& elsewhere, std::vector<Triangle>& out) {
   const std::vector<Vec3>& positions = mesh.positions;
   Vec3 normal = Vec3::Zero();
   double area = 0.0, border_length = 0.0;
@@ -110,18 +120,22 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
     h->info() = v;
     handle.emplace(v, h);
   }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> outline;  // the straightened border, directed
   std::size_t steps = 0, border_edges = 0;
   for (const auto& [v, following] : next) border_edges += following.size();
   for (std::uint32_t v : starts)
     for (std::uint32_t to : next[v]) {
+      const bool straightened = !kept[to];
       while (!kept[to]) {  // a vertex only on a straight border: walk on to the next kept one
         const auto found = next.find(to);
         if (found == next.end() || found->second.size() != 1 || ++steps > border_edges) return false;
         to = found->second.front();
       }
+      if (straightened && elsewhere(v, to, normal)) return false;
       const auto end = handle.find(to);
       if (end == handle.end()) return false;  // the border does not close
       cdt.insert_constraint(handle.at(v), end->second);
+      outline.emplace_back(v, to);
       if (cdt.number_of_vertices() != starts.size()) return false;  // constraints crossed
     }
   mark_nesting(cdt);
@@ -131,6 +145,8 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
     if (f->info() % 2 == 0) continue;
     Triangle t;
     for (int k = 0; k < 3; ++k) t[k] = f->vertex(k)->info();
+    for (int k = 0; k < 3; ++k)  // edge k lies opposite corner k
+      if (!cdt.is_constrained({f, k}) && elsewhere(t[(k + 1) % 3], t[(k + 2) % 3], normal)) return false;
     if (nearly_collinear(positions[t[0]], positions[t[1]], positions[t[2]])) return false;  // cleaning would drop it
     covered += area_of(positions, t);
     triangles.push_back(t);
@@ -138,6 +154,17 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
   // Dropping a border vertex that cutting moved off its straight border by up to
   // moved_distance changes the area by at most that times half its two border edges.
   if (std::abs(covered - area) > 1e-9 * area + moved_distance * border_length) return false;
+  // Every piece of the outline with the region on one side only (not a slit or a fin's foot,
+  // walked both ways) must stay a border edge of the new triangles: a region whose border touches
+  // itself (a crack ending inside a messy face) can fill the right area with another border.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) directed.emplace_back(t[k], t[(k + 1) % 3]);
+  std::sort(directed.begin(), directed.end());
+  std::sort(outline.begin(), outline.end());
+  auto in = [](const auto& edges, std::uint32_t a, std::uint32_t b) { return std::binary_search(edges.begin(), edges.end(), std::pair{a, b}); };
+  for (const auto& [a, b] : outline)
+    if (!in(outline, b, a) && (!in(directed, a, b) || in(directed, b, a))) return false;
   out.insert(out.end(), triangles.begin(), triangles.end());
   return true;
 }
@@ -212,18 +239,54 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     if (r == std::numeric_limits<std::uint32_t>::max()) r = static_cast<std::uint32_t>(regions.size()), regions.emplace_back();
     regions[r].push_back(t);
   }
+  // A region that keeps its fragments keeps every vertex of them, so neighbours that dropped
+  // one of those vertices are re-triangulated with it (else it would be a T-junction there).
+  std::vector<std::vector<std::uint32_t>> regions_at(mesh.positions.size());  // vertices not kept yet
+  for (std::uint32_t r = 0; r < regions.size(); ++r)
+    for (std::uint32_t t : regions[r])
+      for (std::uint32_t v : mesh.triangles[t])
+        if (!kept[v] && (regions_at[v].empty() || regions_at[v].back() != r)) regions_at[v].push_back(r);
+  // Whether edge (a, b) is used by a triangle outside region r that does not face against
+  // `normal` (a back face's triangles do; they lie in the region's plane, on the same edge).
+  auto used_outside = [&](std::uint32_t r, std::uint32_t a, std::uint32_t b, const Vec3& normal) {
+    const std::uint64_t key = key_of(a, b);
+    auto it = std::lower_bound(uses.begin(), uses.end(), std::make_pair(key, std::uint32_t{0}));
+    for (; it != uses.end() && it->first == key; ++it) {
+      const std::uint32_t t = it->second / 3;
+      if (region_of[find_root(parent, t)] != r && !(mesh.area_vector(t).normalized().dot(normal) < kBackFace)) return true;
+    }
+    return false;
+  };
+  std::vector<std::vector<Triangle>> triangles(regions.size());
+  std::vector<char> fragments_kept(regions.size(), 0), queued(regions.size(), 1);
+  std::deque<std::uint32_t> todo(regions.size());
+  std::iota(todo.begin(), todo.end(), 0u);
+  while (!todo.empty()) {
+    const std::uint32_t r = todo.front();
+    todo.pop_front();
+    queued[r] = 0;
+    triangles[r].clear();
+    const auto elsewhere = [&](std::uint32_t a, std::uint32_t b, const Vec3& normal) { return used_outside(r, a, b, normal); };
+    if (regions[r].size() > 1 && retriangulate(mesh, regions[r], interior_edge, kept, options.moved_distance, elsewhere, triangles[r]))
+      continue;
+    triangles[r].clear();
+    fragments_kept[r] = 1;
+    for (std::uint32_t t : regions[r]) {
+      triangles[r].push_back(mesh.triangles[t]);
+      for (std::uint32_t v : mesh.triangles[t]) {
+        if (kept[v]) continue;
+        kept[v] = 1;
+        for (std::uint32_t other : regions_at[v])
+          if (!fragments_kept[other] && !queued[other]) queued[other] = 1, todo.push_back(other);
+      }
+    }
+  }
   MergedFragments merged;
   merged.mesh.positions = mesh.positions;
-  std::vector<Triangle> triangles;
-  for (const std::vector<std::uint32_t>& region : regions) {
-    triangles.clear();
-    if (region.size() == 1 || !retriangulate(mesh, region, interior_edge, kept, options.moved_distance, triangles)) {
-      triangles.clear();
-      for (std::uint32_t t : region) triangles.push_back(mesh.triangles[t]);
-    }
-    merged.mesh.triangles.insert(merged.mesh.triangles.end(), triangles.begin(), triangles.end());
-    merged.representative.insert(merged.representative.end(), triangles.size(), region.front());
-    if (has_materials) merged.mesh.materials.insert(merged.mesh.materials.end(), triangles.size(), mesh.materials[region.front()]);
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    merged.mesh.triangles.insert(merged.mesh.triangles.end(), triangles[r].begin(), triangles[r].end());
+    merged.representative.insert(merged.representative.end(), triangles[r].size(), regions[r].front());
+    if (has_materials) merged.mesh.materials.insert(merged.mesh.materials.end(), triangles[r].size(), mesh.materials[regions[r].front()]);
   }
   return merged;
 }

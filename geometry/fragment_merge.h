@@ -42,8 +42,12 @@ struct FragmentMergeOptions {
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
 /// kept; others only where an edge between different labels, or an edge not used by exactly
 /// two triangles, ends; `options` lets some of those go too.
-/// A region whose re-triangulation does not reproduce its area (within 1e-9 relative, plus
-/// options.moved_distance times the length of its border) keeps its fragments. Deterministic.
+/// A region keeps its fragments when its re-triangulation does not reproduce its area (within
+/// 1e-9 relative, plus options.moved_distance times the length of its border), does not keep
+/// its one-sided border edges as border, or would add an edge that a triangle of another region
+/// already uses (other than its back face, facing the other way in the same plane); its
+/// neighbours then keep every vertex of its fragments too, so the result stays conforming.
+/// Deterministic.
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
                                 const FragmentMergeOptions& options = {});

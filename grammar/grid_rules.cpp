@@ -1,6 +1,7 @@
 #include "grammar/grid_rules.h"
 
 #include "grammar/asymmetric_spans.h"
+#include "geometry/flat_faces.h"
 #include "geometry/fragment_merge.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
@@ -334,37 +335,6 @@ std::vector<char> drop_twins(const TriangleMesh& mesh, TriangleMesh& sheet) {
   return doubled;
 }
 
-// Groups of triangles that lie in one plane (within `tolerance`, model units), share `kind`
-// and their material and are joined by edges that exactly two triangles use, as one id per triangle: cutting may
-// then re-triangulate a flat face as a whole instead of triangle by triangle.
-std::vector<std::uint32_t> coplanar_groups(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> users;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) users[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
-  std::vector<std::uint32_t> group(mesh.triangles.size());
-  std::iota(group.begin(), group.end(), 0u);
-  auto root = [&](std::uint32_t x) {
-    while (group[x] != x) x = group[x] = group[group[x]];
-    return x;
-  };
-  auto same_material = [&](std::uint32_t a, std::uint32_t b) {
-    return !mesh.has_materials() || mesh.materials[a] == mesh.materials[b];
-  };
-  auto flat = [&](std::uint32_t a, std::uint32_t b) {  // b's corners on a's plane, same side up
-    const Vec3 n = mesh.area_vector(a).normalized(), m = mesh.area_vector(b).normalized();
-    if (!(n.dot(m) > 0.0)) return false;
-    const Vec3& p = mesh.positions[mesh.triangles[a][0]];
-    return std::all_of(mesh.triangles[b].begin(), mesh.triangles[b].end(),
-                       [&](std::uint32_t v) { return std::abs(n.dot(mesh.positions[v] - p)) <= tolerance; });
-  };
-  for (const auto& [edge, triangles] : users)
-    if (triangles.size() == 2 && kind[triangles[0]] == kind[triangles[1]] && same_material(triangles[0], triangles[1]) &&
-        flat(triangles[0], triangles[1]) && flat(triangles[1], triangles[0]))
-      group[root(triangles[0])] = root(triangles[1]);
-  for (std::uint32_t t = 0; t < group.size(); ++t) group[t] = root(t);
-  return group;
-}
-
 }  // namespace
 
 int slab_class(std::size_t slab, const GridDirection& direction) {
@@ -462,7 +432,7 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
   // Back-to-back double faces are cut as one sheet and doubled again at the end, so both sides
   // stay exact duplicates (and their edges manifold for the merge below).
   const std::vector<char> doubled = drop_twins(mesh, cut);
-  const std::vector<std::uint32_t> group = coplanar_groups(cut, doubled, 1e-6 * eps);
+  const std::vector<std::uint32_t> group = flat_faces(cut, doubled, 1e-6 * eps);
   std::vector<std::uint32_t> origin(cut.triangles.size());  // sheet triangle of each fragment
   std::iota(origin.begin(), origin.end(), 0u);
   std::vector<std::vector<double>> planes;

@@ -1,6 +1,7 @@
 #include "synthesis/grid_resize.h"
 
 #include "geometry/errors.h"
+#include "geometry/flat_faces.h"
 #include "geometry/t_junctions.h"
 
 #include <fmt/format.h>
@@ -84,7 +85,7 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
     }
   }
   resolve_t_junctions(result, weld_tolerance, &seam_vertices);
-  return result;
+  return merge_flat_faces(result);
 }
 
 }  // namespace dg

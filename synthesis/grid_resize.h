@@ -17,7 +17,8 @@ namespace dg {
 inline constexpr double kSeamWeldFraction = 1e-4;
 
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
-/// range) and welds vertices closer than `weld_tolerance` (model units). Counts equal to the
+/// range), welds vertices closer than `weld_tolerance` (model units) and re-triangulates the flat
+/// faces the seams split (merge_flat_faces). Counts equal to the
 /// grid's own counts reproduce the exemplar. Every triangle keeps its piece triangle's material
 /// when all pieces carry materials (the result has none otherwise). Throws InputError when a count is out of range
 /// (below a direction's min_units or the grid's range) or the number of counts does not match

@@ -1,6 +1,7 @@
 #include "synthesis/shape_derivation.h"
 
 #include "geometry/errors.h"
+#include "geometry/flat_faces.h"
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "grammar/random.h"
@@ -142,7 +143,10 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     result.changed = result.changed || accepted->first != slot.slot.original_production;
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
-  if (options.weld_seams) resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_vertices);
+  if (options.weld_seams) {
+    resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_vertices);
+    result.mesh = merge_flat_faces(result.mesh);
+  }
   return result;
 }
 

@@ -30,7 +30,7 @@ struct ShapeDerivationOptions {
 };
 
 struct ShapeDerivation {
-  TriangleMesh mesh;                        ///< welded at the seams
+  TriangleMesh mesh;                        ///< welded at the seams, flat faces split by seams merged
   std::vector<std::size_t> productions;     ///< applied productions (indices), in placement order
   bool changed = false;                     ///< some slot took another production than the exemplar's
   std::size_t collisions_retried = 0;       ///< random choices rejected for colliding

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using dg::Vec3;
 
 namespace {
@@ -105,4 +107,30 @@ TEST_CASE("fragment merge: border vertices a cut moved by up to moved_distance s
       dg::merge_fragments(cut.mesh, cut.origin, label, pinned, {.straighten_open_borders = true, .moved_distance = 1e-6});
   CHECK(merged.mesh.triangles.size() == 2);
   CHECK(merged.mesh.area() == Approx(cut.mesh.area()).epsilon(1e-6));
+}
+
+TEST_CASE("fragment merge: a region that keeps its fragments keeps their border vertices in its neighbours too",
+          "[geometry][fragment_merge]") {
+  dg::ZoneCut cut = diced_square();
+  std::vector<std::uint32_t> label(cut.mesh.triangles.size());
+  for (std::size_t t = 0; t < label.size(); ++t) label[t] = centroid(cut.mesh, t).x() < 0.5 ? 0 : 1;
+  // Lifting the cut vertex at (0.8, 0.6) out of the plane makes the re-triangulation of its region
+  // (the right half below the diagonal, without that vertex) change its area, so that region keeps
+  // its fragments, and with them the vertices on x = 0.5 the left half would drop from its border.
+  std::size_t lifted = cut.mesh.positions.size();
+  for (std::size_t v = 0; v < cut.mesh.positions.size(); ++v)
+    if ((cut.mesh.positions[v] - Vec3(0.8, 0.6, 0)).norm() < 1e-9) lifted = v;
+  REQUIRE(lifted < cut.mesh.positions.size());
+  cut.mesh.positions[lifted].z() = 1e-2;
+  const dg::MergedFragments merged =
+      dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), {.straighten_label_borders = true});
+  const bool lifted_kept = std::any_of(merged.mesh.triangles.begin(), merged.mesh.triangles.end(), [&](const dg::Triangle& t) {
+    return std::find(t.begin(), t.end(), static_cast<std::uint32_t>(lifted)) != t.end();
+  });
+  CHECK(lifted_kept);  // its region kept its fragments
+  CHECK(merged.mesh.area() == Approx(cut.mesh.area()).epsilon(1e-12));
+  // Conforming: no T-junction on x = 0.5, only the square's outline is open.
+  const dg::EdgeStatistics edges = dg::edge_statistics(merged.mesh);
+  CHECK(edges.non_manifold_edges == 0);
+  CHECK(edges.boundary_edges == 40);
 }

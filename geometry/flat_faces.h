@@ -1,0 +1,29 @@
+#pragma once
+// Flat faces of a triangle mesh: edge-joined triangles of one material that lie in one plane.
+// Cutting and assembling pieces leaves flat faces split into many triangles along seams that
+// are no longer seams; merging re-triangulates each face with as few triangles as its outline
+// allows.
+
+#include "geometry/mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace dg {
+
+/// One id per triangle of `mesh` (the index of one triangle of its group): triangles share an id
+/// when edges used by exactly two triangles join them, they face the same side, share their
+/// material and their `kind` flag (one per triangle; empty = all alike), and each one's corners
+/// lie within `tolerance` (model units) of the other's plane.
+std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance);
+
+/// `mesh` with each flat face (see flat_faces, within 1e-6 of the mesh's bounding-box diagonal;
+/// `kind` all alike) re-triangulated from its outline: vertices inside a face go, and so do
+/// vertices where exactly two face outlines meet in a straight line (both faces drop them, so
+/// the mesh stays conforming). Corners, vertices on open and non-manifold edges and vertices of
+/// curved areas stay; a face whose re-triangulation would change its area by more than that
+/// distance times its outline's length keeps its triangles and all their vertices. Unused
+/// vertices are removed; materials travel with the triangles. Deterministic.
+TriangleMesh merge_flat_faces(const TriangleMesh& mesh);
+
+}  // namespace dg
