@@ -154,9 +154,59 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   if (d.cwiseAbs().dot(prepared.cleaning.bounds.size()) < min_repeats * pitch) return std::nullopt;
   const double half = 0.5 * surface.eps() * (std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()));
 
-  std::vector<char> in_r(surface.cell_count(), 0), in_xi(surface.cell_count(), 0), in_image(surface.cell_count(), 0);
+  std::vector<char> in_r(surface.cell_count(), 0), in_xi(surface.cell_count(), 0);
   for (std::uint32_t c : symmetry.region.r_symmetric_cells) in_r[c] = 1;
   for (std::uint32_t c : symmetry.region.symmetric_cells) in_xi[c] = 1;
+  Blocked forward, first_plane;
+  SlabCells slab_cells;
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+    const double s = d.dot(surface.centre(c));
+    if (!in_r[c]) forward.add(s - half, s + half);
+    if (!in_xi[c]) first_plane.add(s - half, s + half);
+    slab_cells.add(s, in_xi[c] != 0);
+  }
+  forward.finish();
+  slab_cells.finish();
+
+  // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
+  // plus every vertex coordinate (cuts through existing seams need no new vertices).
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  std::map<double, int> vertex_offsets;
+  for (const Vec3& p : prepared.model.mesh.positions) {
+    const double s = d.dot(p);
+    ++vertex_offsets[s];
+    lowest = std::min(lowest, s);
+    highest = std::max(highest, s);
+  }
+  std::map<double, int> phases;  // phase in [0, pitch) -> vertices on a plane at that phase
+  const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
+  for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
+  for (const auto& [s, n] : vertex_offsets) phases[std::fmod(s - lowest, pitch)] += n;
+  // Every slab between planes `first` + k pitch, k < `slabs`, maps onto the next: (almost) no
+  // asymmetric cell strictly inside.
+  auto slabs_repeat = [&](double first, int slabs) {
+    for (int k = 0; k < slabs; ++k) {
+      const auto [asymmetric_cells, cells] = slab_cells.count(first + k * pitch + half, first + (k + 1) * pitch - half);
+      if (static_cast<double>(asymmetric_cells) > max_slab_asymmetry * static_cast<double>(cells)) return false;
+    }
+    return true;
+  };
+
+  // A quick test whether any run of min_repeats units may exist, before the costly parts (the
+  // image of the r-symmetric area, the asymmetry near the first plane): their tests only take
+  // planes away, so without such a run here there is none below.
+  first_plane.finish();
+  bool may_repeat = false;
+  for (auto phase = phases.begin(); phase != phases.end() && !may_repeat; ++phase)
+    for (double first = lowest + phase->first; first <= highest && !may_repeat; first += pitch) {
+      if (first_plane.contains(first)) continue;
+      int free = 1;
+      while (free < min_repeats && first + free * pitch <= highest && !forward.contains(first + free * pitch)) ++free;
+      may_repeat = free == min_repeats && slabs_repeat(first, min_repeats - 1);
+    }
+  if (!may_repeat) return std::nullopt;
+
+  std::vector<char> in_image(surface.cell_count(), 0);
   const CellMatcher matcher(surface, nullptr);
   // A cell lies in the image when its preimage does lie in the r-symmetric region (pulled back,
   // so a rotation's rounding to voxels leaves no holes in the image).
@@ -171,35 +221,18 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   // top is a copy of the unit's top) or at the second (asymmetry below: the second unit's bottom
   // is a copy of the first's).
   const std::vector<PositionSpan> spans = asymmetric_spans(surface, in_xi, d, surface.r());
-  Blocked forward, backward, first_plane;
-  SlabCells slab_cells;
+  Blocked backward;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
     const double s = d.dot(surface.centre(c));
-    if (!in_r[c]) forward.add(s - half, s + half);
     if (!in_image[c]) backward.add(s - half, s + half);
-    if (!in_xi[c]) {
-      first_plane.add(s - half, s + half);
-    } else if (!in_r[c] && !spans[c].empty()) {
+    if (in_xi[c] && !in_r[c] && !spans[c].empty()) {
       const double lo = std::max(s - half, spans[c].lo - half), hi = std::min(s + half, spans[c].hi + half);
       if (lo <= hi) first_plane.add(lo, hi);
     }
-    slab_cells.add(s, in_xi[c] != 0);
   }
-  forward.finish();
   backward.finish();
   first_plane.finish();
-  slab_cells.finish();
 
-  // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
-  // plus every vertex coordinate (cuts through existing seams need no new vertices).
-  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-  std::map<double, int> vertex_offsets;
-  for (const Vec3& p : prepared.model.mesh.positions) {
-    const double s = d.dot(p);
-    ++vertex_offsets[s];
-    lowest = std::min(lowest, s);
-    highest = std::max(highest, s);
-  }
   // Planes that hold a whole face: a cut there would leave the face on either side by rounding.
   std::vector<double> face_planes;
   const TriangleMesh& mesh = prepared.model.mesh;
@@ -213,10 +246,6 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     const auto it = std::lower_bound(face_planes.begin(), face_planes.end(), plane - in_plane);
     return it != face_planes.end() && *it <= plane + in_plane;
   };
-  std::map<double, int> phases;  // phase in [0, pitch) -> vertices on a plane at that phase
-  const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
-  for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
-  for (const auto& [s, n] : vertex_offsets) phases[std::fmod(s - lowest, pitch)] += n;
 
   std::optional<GridDirection> best;
   double best_clearance = -1.0;
@@ -234,14 +263,12 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
       // The plane after the last unit must lie in the image of the r-symmetric area.
       while (count > 0 && backward.contains(first + count * pitch)) --count;
-      // Every slab but the last maps onto the next: (almost) no asymmetric cell strictly inside.
-      for (int k = 0; k + 1 < count; ++k) {
-        const auto [asymmetric_cells, cells] = slab_cells.count(first + k * pitch + half, first + (k + 1) * pitch - half);
-        if (static_cast<double>(asymmetric_cells) > max_slab_asymmetry * static_cast<double>(cells)) {
+      // Every slab but the last maps onto the next.
+      for (int k = 0; k + 1 < count; ++k)
+        if (!slabs_repeat(first + k * pitch, 1)) {
           count = k + 1;
           break;
         }
-      }
       if (count < min_repeats) continue;
       bool on_face = false;
       for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
