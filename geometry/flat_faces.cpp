@@ -4,7 +4,6 @@
 #include "geometry/submesh.h"
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 
 namespace dg {
@@ -18,10 +17,18 @@ constexpr double kFlatFraction = 1e-6;
 }  // namespace
 
 std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> users;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) users[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
-  std::vector<std::uint32_t> group(mesh.triangles.size());
+  const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
+  std::vector<Vec3> normal(count);
+  for (std::uint32_t t = 0; t < count; ++t) normal[t] = mesh.area_vector(t).normalized();
+  // Triangles around each vertex: around[first[v] .. first[v + 1]).
+  std::vector<std::uint32_t> first(mesh.positions.size() + 1, 0), around(3 * static_cast<std::size_t>(count));
+  for (const Triangle& tri : mesh.triangles)
+    for (std::uint32_t v : tri) ++first[v + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::uint32_t> filled(first.begin(), first.end() - 1);
+  for (std::uint32_t t = 0; t < count; ++t)
+    for (std::uint32_t v : mesh.triangles[t]) around[filled[v]++] = t;
+  std::vector<std::uint32_t> group(count);
   std::iota(group.begin(), group.end(), 0u);
   auto root = [&](std::uint32_t x) {
     while (group[x] != x) x = group[x] = group[group[x]];
@@ -31,17 +38,25 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
     return (kind.empty() || kind[a] == kind[b]) && (!mesh.has_materials() || mesh.materials[a] == mesh.materials[b]);
   };
   auto flat = [&](std::uint32_t a, std::uint32_t b) {  // b's corners on a's plane, same side up
-    const Vec3 n = mesh.area_vector(a).normalized(), m = mesh.area_vector(b).normalized();
-    if (!(n.dot(m) > 0.0)) return false;
+    if (!(normal[a].dot(normal[b]) > 0.0)) return false;
     const Vec3& p = mesh.positions[mesh.triangles[a][0]];
     return std::all_of(mesh.triangles[b].begin(), mesh.triangles[b].end(),
-                       [&](std::uint32_t v) { return std::abs(n.dot(mesh.positions[v] - p)) <= tolerance; });
+                       [&](std::uint32_t v) { return std::abs(normal[a].dot(mesh.positions[v] - p)) <= tolerance; });
   };
-  for (const auto& [edge, triangles] : users)
-    if (triangles.size() == 2 && alike(triangles[0], triangles[1]) && flat(triangles[0], triangles[1]) &&
-        flat(triangles[1], triangles[0]))
-      group[root(triangles[0])] = root(triangles[1]);
-  for (std::uint32_t t = 0; t < group.size(); ++t) group[t] = root(t);
+  for (std::uint32_t t = 0; t < count; ++t)
+    for (int k = 0; k < 3; ++k) {
+      // The triangles on edge (a, b): those around a that have b.
+      const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      std::uint32_t users = 0, other = t;
+      for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
+        const Triangle& tri = mesh.triangles[around[i]];
+        if (std::find(tri.begin(), tri.end(), b) == tri.end()) continue;
+        ++users;
+        if (around[i] != t) other = around[i];
+      }
+      if (users == 2 && other > t && alike(t, other) && flat(t, other) && flat(other, t)) group[root(t)] = root(other);
+    }
+  for (std::uint32_t t = 0; t < count; ++t) group[t] = root(t);
   return group;
 }
 

@@ -241,11 +241,17 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   }
   // A region that keeps its fragments keeps every vertex of them, so neighbours that dropped
   // one of those vertices are re-triangulated with it (else it would be a T-junction there).
-  std::vector<std::vector<std::uint32_t>> regions_at(mesh.positions.size());  // vertices not kept yet
-  for (std::uint32_t r = 0; r < regions.size(); ++r)
-    for (std::uint32_t t : regions[r])
-      for (std::uint32_t v : mesh.triangles[t])
-        if (!kept[v] && (regions_at[v].empty() || regions_at[v].back() != r)) regions_at[v].push_back(r);
+  // Regions around each vertex not kept yet: region_list[first_region[v] .. first_region[v + 1]).
+  std::vector<std::uint32_t> first_region(mesh.positions.size() + 1, 0), region_list;
+  for (std::uint32_t t = 0; t < triangle_count; ++t)
+    for (std::uint32_t v : mesh.triangles[t])
+      if (!kept[v]) ++first_region[v + 1];
+  std::partial_sum(first_region.begin(), first_region.end(), first_region.begin());
+  region_list.resize(first_region.back());
+  std::vector<std::uint32_t> filled(first_region.begin(), first_region.end() - 1);
+  for (std::uint32_t t = 0; t < triangle_count; ++t)
+    for (std::uint32_t v : mesh.triangles[t])
+      if (!kept[v]) region_list[filled[v]++] = region_of[find_root(parent, t)];
   // Whether edge (a, b) is used by a triangle outside region r that does not face against
   // `normal` (a back face's triangles do; they lie in the region's plane, on the same edge).
   auto used_outside = [&](std::uint32_t r, std::uint32_t a, std::uint32_t b, const Vec3& normal) {
@@ -276,8 +282,9 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (std::uint32_t v : mesh.triangles[t]) {
         if (kept[v]) continue;
         kept[v] = 1;
-        for (std::uint32_t other : regions_at[v])
-          if (!fragments_kept[other] && !queued[other]) queued[other] = 1, todo.push_back(other);
+        for (std::uint32_t i = first_region[v]; i < first_region[v + 1]; ++i)
+          if (const std::uint32_t other = region_list[i]; !fragments_kept[other] && !queued[other])
+            queued[other] = 1, todo.push_back(other);
       }
     }
   }
