@@ -68,7 +68,8 @@ TriangleMesh merge_flat_faces(const TriangleMesh& mesh) {
   const std::vector<std::uint32_t> face = flat_faces(mesh, {}, tolerance);
   const std::vector<std::uint32_t> one_label(mesh.triangles.size(), 0);
   const std::vector<char> pinned(mesh.positions.size(), 0);
-  MergedFragments merged = merge_fragments(mesh, face, one_label, pinned, {.straighten_label_borders = true, .moved_distance = tolerance});
+  const MergedFragments merged =
+      merge_fragments(mesh, face, one_label, pinned, {.straighten_label_borders = true, .moved_distance = tolerance});
   return without_unused_vertices(merged.mesh);
 }
 
