@@ -8,7 +8,8 @@ namespace dg {
 
 /// Splits every boundary edge at the boundary vertices lying on it (within `tolerance` model
 /// units, strictly between its ends), then welds vertices closer than `tolerance`. Returns the
-/// number of edge splits. Assembled pieces whose seams coincide geometrically become closed.
+/// number of edge splits. Assembled pieces whose seams coincide geometrically become closed. A
+/// sliver whose third corner lies on its own split edge has no area and is dropped.
 /// With `seam_vertices` (one flag per vertex: the vertices on the open edges of the assembled
 /// pieces), only those are welded and only edges between them are examined, which is much
 /// faster on large assemblies and gives the same result when the flags cover every open edge.

@@ -62,3 +62,18 @@ TEST_CASE("open edge vertices of a closed box and of a box without one face", "[
   box.triangles.erase(box.triangles.begin() + 2, box.triangles.begin() + 4);  // the top face z = 1
   CHECK(dg::open_edge_vertices(box) == std::vector<char>{0, 0, 0, 0, 1, 1, 1, 1});
 }
+
+TEST_CASE("a sliver whose third corner lies on its own open edge is dropped, not split", "[geometry][t_junctions]") {
+  // The sliver a b c has c on its open edge a b; the triangle a c d beside it. Splitting a b at
+  // c would give the parts a c c and c b c: triangles with a repeated corner.
+  dg::TriangleMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)};
+  enum : std::uint32_t { a, b, c, d };
+  mesh.triangles = {{a, b, c}, {a, c, d}};
+  mesh.materials = {0, 1};
+  CHECK(dg::resolve_t_junctions(mesh, 1e-9) == 1);
+  REQUIRE(mesh.triangles.size() == 1);
+  CHECK(mesh.triangles[0] == dg::Triangle{a, c, d});
+  CHECK(mesh.materials == std::vector<std::uint32_t>{1});
+  CHECK(dg::edge_statistics(mesh).boundary_edges == 3);
+}
