@@ -2,6 +2,7 @@
 
 #include "geometry/fragment_merge.h"
 #include "geometry/submesh.h"
+#include "geometry/topology.h"
 
 #include <algorithm>
 #include <numeric>
@@ -20,14 +21,7 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
   const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
   std::vector<Vec3> normal(count);
   for (std::uint32_t t = 0; t < count; ++t) normal[t] = mesh.area_vector(t).normalized();
-  // Triangles around each vertex: around[first[v] .. first[v + 1]).
-  std::vector<std::uint32_t> first(mesh.positions.size() + 1, 0), around(3 * static_cast<std::size_t>(count));
-  for (const Triangle& tri : mesh.triangles)
-    for (std::uint32_t v : tri) ++first[v + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<std::uint32_t> filled(first.begin(), first.end() - 1);
-  for (std::uint32_t t = 0; t < count; ++t)
-    for (std::uint32_t v : mesh.triangles[t]) around[filled[v]++] = t;
+  const VertexTriangles around = vertex_triangles(mesh);
   std::vector<std::uint32_t> group(count);
   std::iota(group.begin(), group.end(), 0u);
   auto root = [&](std::uint32_t x) {
@@ -48,11 +42,11 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
       // The triangles on edge (a, b): those around a that have b.
       const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
       std::uint32_t users = 0, other = t;
-      for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
-        const Triangle& tri = mesh.triangles[around[i]];
-        if (std::find(tri.begin(), tri.end(), b) == tri.end()) continue;
+      for (std::uint32_t i = around.first[a]; i < around.first[a + 1]; ++i) {
+        const std::uint32_t u = around.triangles[i];
+        if (std::find(mesh.triangles[u].begin(), mesh.triangles[u].end(), b) == mesh.triangles[u].end()) continue;
         ++users;
-        if (around[i] != t) other = around[i];
+        if (u != t) other = u;
       }
       if (users == 2 && other > t && alike(t, other) && flat(t, other) && flat(other, t)) group[root(t)] = root(other);
     }
@@ -62,9 +56,7 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
 
 TriangleMesh merge_flat_faces(const TriangleMesh& mesh) {
   if (mesh.triangles.empty()) return mesh;
-  Eigen::AlignedBox3d bounds;
-  for (const Vec3& p : mesh.positions) bounds.extend(p);
-  const double tolerance = kFlatFraction * bounds.diagonal().norm();
+  const double tolerance = kFlatFraction * mesh.bounds().diagonal();
   const std::vector<std::uint32_t> face = flat_faces(mesh, {}, tolerance);
   const std::vector<std::uint32_t> one_label(mesh.triangles.size(), 0);
   const std::vector<char> pinned(mesh.positions.size(), 0);

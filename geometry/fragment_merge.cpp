@@ -1,6 +1,7 @@
 #include "geometry/fragment_merge.h"
 
 #include "geometry/cleaning.h"
+#include "geometry/topology.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -241,17 +242,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   }
   // A region that keeps its fragments keeps every vertex of them, so neighbours that dropped
   // one of those vertices are re-triangulated with it (else it would be a T-junction there).
-  // Regions around each vertex not kept yet: region_list[first_region[v] .. first_region[v + 1]).
-  std::vector<std::uint32_t> first_region(mesh.positions.size() + 1, 0), region_list;
-  for (std::uint32_t t = 0; t < triangle_count; ++t)
-    for (std::uint32_t v : mesh.triangles[t])
-      if (!kept[v]) ++first_region[v + 1];
-  std::partial_sum(first_region.begin(), first_region.end(), first_region.begin());
-  region_list.resize(first_region.back());
-  std::vector<std::uint32_t> filled(first_region.begin(), first_region.end() - 1);
-  for (std::uint32_t t = 0; t < triangle_count; ++t)
-    for (std::uint32_t v : mesh.triangles[t])
-      if (!kept[v]) region_list[filled[v]++] = region_of[find_root(parent, t)];
+  const VertexTriangles around = vertex_triangles(mesh);
   // Whether edge (a, b) is used by a triangle outside region r that does not face against
   // `normal` (a back face's triangles do; they lie in the region's plane, on the same edge).
   auto used_outside = [&](std::uint32_t r, std::uint32_t a, std::uint32_t b, const Vec3& normal) {
@@ -282,8 +273,8 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (std::uint32_t v : mesh.triangles[t]) {
         if (kept[v]) continue;
         kept[v] = 1;
-        for (std::uint32_t i = first_region[v]; i < first_region[v + 1]; ++i)
-          if (const std::uint32_t other = region_list[i]; !fragments_kept[other] && !queued[other])
+        for (std::uint32_t i = around.first[v]; i < around.first[v + 1]; ++i)
+          if (const std::uint32_t other = region_of[find_root(parent, around.triangles[i])]; !fragments_kept[other] && !queued[other])
             queued[other] = 1, todo.push_back(other);
       }
     }

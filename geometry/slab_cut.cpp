@@ -162,19 +162,24 @@ std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, c
     }
     remap[v] = found;
   }
+  for (Triangle& tri : mesh.triangles)
+    for (std::uint32_t& v : tri) v = remap[v];
+  mesh.positions = std::move(kept);
+  drop_repeated_corners(mesh);
+  return remap;
+}
+
+void drop_repeated_corners(TriangleMesh& mesh) {
   const bool has_materials = mesh.has_materials();
   std::size_t count = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& old = mesh.triangles[t];
-    const Triangle w{remap[old[0]], remap[old[1]], remap[old[2]]};
-    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;
+    const Triangle tri = mesh.triangles[t];
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
     if (has_materials) mesh.materials[count] = mesh.materials[t];
-    mesh.triangles[count++] = w;
+    mesh.triangles[count++] = tri;
   }
-  mesh.positions = std::move(kept);
   mesh.triangles.resize(count);
   if (has_materials) mesh.materials.resize(count);
-  return remap;
 }
 
 }  // namespace dg

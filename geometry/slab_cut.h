@@ -22,6 +22,10 @@ TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, c
 /// i between cuts[i-1] and cuts[i], cuts.size() above the last (cuts ascending).
 std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& direction, const std::vector<double>& cuts);
 
+/// Drops the triangles of `mesh` with a repeated corner (index); the others keep their order
+/// and materials.
+void drop_repeated_corners(TriangleMesh& mesh);
+
 /// Merges vertices closer than `tolerance` (model units) into the first of them (in index
 /// order) and drops triangles that become degenerate (the others keep their materials). With `only` (one flag per vertex), only
 /// flagged vertices are merged, with each other; the rest are kept as they are. Returns the new

@@ -186,17 +186,7 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
   }
   // A sliver whose apex lies on its own open edge split into parts with a repeated corner: it had
   // no area, and its neighbours now meet along the edge it filled, so its parts go.
-  const bool with_materials = mesh.has_materials();
-  std::size_t kept = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle tri = mesh.triangles[t];
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
-    mesh.triangles[kept] = tri;
-    if (with_materials) mesh.materials[kept] = mesh.materials[t];
-    ++kept;
-  }
-  mesh.triangles.resize(kept);
-  if (with_materials) mesh.materials.resize(kept);
+  drop_repeated_corners(mesh);
   return splits;
 }
 

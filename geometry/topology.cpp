@@ -103,4 +103,17 @@ std::vector<std::uint32_t> triangle_components(const TriangleMesh& mesh, std::si
   return component;
 }
 
+VertexTriangles vertex_triangles(const TriangleMesh& mesh) {
+  VertexTriangles around;
+  around.first.assign(mesh.positions.size() + 1, 0);
+  for (const Triangle& tri : mesh.triangles)
+    for (std::uint32_t v : tri) ++around.first[v + 1];
+  std::partial_sum(around.first.begin(), around.first.end(), around.first.begin());
+  around.triangles.resize(around.first.back());
+  std::vector<std::uint32_t> filled(around.first.begin(), around.first.end() - 1);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::uint32_t v : mesh.triangles[t]) around.triangles[filled[v]++] = t;
+  return around;
+}
+
 }  // namespace dg

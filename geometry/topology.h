@@ -25,6 +25,14 @@ bool is_closed_and_oriented(const TriangleMesh& mesh);
 
 /// Component id per triangle: triangles sharing a vertex index are connected; components are
 /// numbered in order of their lowest triangle index. Writes the number of components when asked.
+/// Triangles around each vertex: triangles[first[v] .. first[v + 1]) are those using vertex v,
+/// in index order (one using v twice is listed twice).
+struct VertexTriangles {
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> triangles;
+};
+VertexTriangles vertex_triangles(const TriangleMesh& mesh);
+
 std::vector<std::uint32_t> triangle_components(const TriangleMesh& mesh, std::size_t* component_count = nullptr);
 
 }  // namespace dg
