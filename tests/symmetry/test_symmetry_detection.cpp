@@ -119,6 +119,30 @@ TEST_CASE("facade and messy facade: two independent translations (column and row
   }
 }
 
+TEST_CASE("two rows at nearby pitches: the larger row's pitch is found, not a blend of both", "[symmetry]") {
+  // Nine posts 10 apart and, beside them, six blocks 10 + 0.35 eps apart (an artist's spacing
+  // that drifted). Their keypoint pairs vote into one bin, and a fit to all of them lands
+  // between the two pitches, where neither matches within 0.1 eps.
+  dg::PrepareOptions options;
+  options.r = 1.6;
+  options.eps = 0.4;
+  const double drift = 0.35 * options.eps;
+  dg::Model model;
+  for (int k = 0; k < 9; ++k)
+    dg::test::append(model.mesh, dg::test::make_box(Vec3(10.0 * k, 0, 0), Vec3(10.0 * k + 1.0, 1.0, 3.0)));
+  for (int k = 0; k < 6; ++k) {
+    const double x = (10.0 + drift) * k + 3.0;
+    dg::test::append(model.mesh, dg::test::make_box(Vec3(x, 6.0, 0), Vec3(x + 1.5, 7.0, 2.0)));
+  }
+  dg::PreparedModel prepared = dg::prepare_model(std::move(model), options);
+  const dg::SymmetryResult result = dg::detect_symmetries(prepared);
+  const dg::SymmetryFamily* posts = translation_family(result, Vec3(10.0, 0, 0), 1e-6);
+  REQUIRE(posts != nullptr);
+  CHECK(posts->generator.angle() < 1e-9);
+  for (int power = 1; power < 9; ++power)
+    CHECK(std::find(posts->powers.begin(), posts->powers.end(), power) != posts->powers.end());
+}
+
 TEST_CASE("back-to-back duplicated faces keep their symmetry", "[symmetry]") {
   // Messy assets double faces with the opposite orientation (the messy facade does it to a few
   // windows); the column translation must cover the same area when every face of the facade's
