@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <numeric>
+
 using dg::Vec3;
 
 namespace {
@@ -109,8 +111,9 @@ TEST_CASE("materials: cell pieces keep the material of their triangle", "[geomet
   model.materials = {{"wall", Vec3(0.8, 0.8, 0.8)}, {"roof", Vec3(0.6, 0.1, 0.1)}};
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
   REQUIRE(prepared.model.mesh.has_materials());
-  std::vector<std::uint32_t> cells;
-  const dg::TriangleMesh pieces = dg::cut_into_cells(prepared.model.mesh, prepared.surface, cells);
+  std::vector<std::uint32_t> cell_indices(prepared.surface.cell_count()), cells;
+  std::iota(cell_indices.begin(), cell_indices.end(), 0u);
+  const dg::TriangleMesh pieces = dg::cut_where_cell_keys_differ(prepared.model.mesh, prepared.surface, cell_indices, cells);
   REQUIRE(pieces.has_materials());
   double roof = 0.0;
   for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {

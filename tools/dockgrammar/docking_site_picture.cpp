@@ -7,6 +7,7 @@
 #include "geometry/render_mesh.h"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 
 namespace dg::cli {
@@ -30,8 +31,6 @@ bool write_docking_site_picture(const std::filesystem::path& png, const std::fil
                                 const std::string& up_axis) {
   if (docking.sites.empty()) return false;
   const VoxelSurface& surface = prepared.surface;
-  std::vector<std::uint32_t> piece_cells;
-  const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
 
   std::vector<std::size_t> order(docking.sites.size());
   std::iota(order.begin(), order.end(), 0);
@@ -55,10 +54,21 @@ bool write_docking_site_picture(const std::filesystem::path& png, const std::fil
     for (std::uint32_t c : site.docker) in_docker[c] = 0;
   }
 
+  // Triangles whose cells share a colour stay whole; only those across colour borders are cut.
+  std::vector<Rgb> palette;
+  std::map<Rgb, std::uint32_t> palette_index;
+  std::vector<std::uint32_t> cell_keys(surface.cell_count());
+  for (std::size_t c = 0; c < cell_keys.size(); ++c) {
+    const auto [at, added] = palette_index.emplace(cell_color[c], static_cast<std::uint32_t>(palette.size()));
+    if (added) palette.push_back(cell_color[c]);
+    cell_keys[c] = at->second;
+  }
+  std::vector<std::uint32_t> triangle_keys;
+  const TriangleMesh pieces = cut_where_cell_keys_differ(prepared.model.mesh, surface, cell_keys, triangle_keys);
   std::vector<Rgb> vertex_colors(pieces.positions.size());
   std::vector<Rgba8> triangle_colors(pieces.triangles.size());
   for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
-    const Rgb color = cell_color[piece_cells[t]];
+    const Rgb color = palette[triangle_keys[t]];
     triangle_colors[t] = {color[0], color[1], color[2], 255};
     for (std::uint32_t v : pieces.triangles[t]) vertex_colors[v] = color;
   }

@@ -116,23 +116,24 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
   if (prepared.model.is_point_cloud()) throw InputError("-o pictures are made for meshes only (this model is a point cloud)");
   create_output_folder(folder);
   const VoxelSurface& surface = prepared.surface;
-  std::vector<std::uint32_t> piece_cells;
-  const TriangleMesh pieces = cut_into_cells(prepared.model.mesh, surface, piece_cells);
   const CellMatcher matcher(surface, nullptr);
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
     const DetectedSymmetry& s = result.symmetries[i];
     enum : std::uint8_t { grey = 0, pink = 1, red = 2, blue = 4 };
-    std::vector<std::uint8_t> state(surface.cell_count(), grey);
+    std::vector<std::uint32_t> state(surface.cell_count(), grey);
     for (std::uint32_t c : s.region.symmetric_cells) state[c] = pink;
     for (std::uint32_t c : s.region.r_symmetric_cells) state[c] = red;
     for (std::uint32_t c : s.region.r_symmetric_cells) {
       const std::int64_t image = matcher.image_cell(c, s.transform);
       if (image >= 0) state[static_cast<std::size_t>(image)] |= blue;
     }
+    // Triangles whose cells share a state stay whole; only those across state borders are cut.
+    std::vector<std::uint32_t> piece_states;
+    const TriangleMesh pieces = cut_where_cell_keys_differ(prepared.model.mesh, surface, state, piece_states);
     std::vector<Rgb> colors(pieces.positions.size());
     std::vector<Rgba8> triangle_colors(pieces.triangles.size());
     for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
-      const std::uint8_t st = state[piece_cells[t]];
+      const std::uint32_t st = piece_states[t];
       Rgb color{170, 170, 170};
       if (st & blue) color = (st & red) ? Rgb{150, 60, 200} : Rgb{40, 90, 220};
       else if (st & red) color = Rgb{220, 40, 40};
