@@ -54,14 +54,16 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
   return group;
 }
 
-TriangleMesh merge_flat_faces(const TriangleMesh& mesh) {
+TriangleMesh merge_flat_faces(const TriangleMesh& mesh, const FlatFaceMergeOptions& options) {
   if (mesh.triangles.empty()) return mesh;
   const double tolerance = kFlatFraction * mesh.bounds().diagonal();
   const std::vector<std::uint32_t> face = flat_faces(mesh, {}, tolerance);
   const std::vector<std::uint32_t> one_label(mesh.triangles.size(), 0);
   const std::vector<char> pinned(mesh.positions.size(), 0);
-  const MergedFragments merged =
-      merge_fragments(mesh, face, one_label, pinned, {.straighten_label_borders = true, .moved_distance = tolerance});
+  const MergedFragments merged = merge_fragments(mesh, face, one_label, pinned,
+                                                 {.straighten_open_borders = options.straighten_open_borders,
+                                                  .straighten_label_borders = true,
+                                                  .moved_distance = std::max(tolerance, options.moved_distance)});
   return without_unused_vertices(merged.mesh);
 }
 

@@ -17,13 +17,23 @@ namespace dg {
 /// lie within `tolerance` (model units) of the other's plane.
 std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance);
 
+/// What more merge_flat_faces may do.
+struct FlatFaceMergeOptions {
+  /// Also drop vertices inside one flat face where two open edges meet in a straight line (a
+  /// piece's seam, which a mesh welded to it later closes, see resolve_t_junctions).
+  bool straighten_open_borders = false;
+  /// How far (model units) earlier cuts may have moved a vertex off a face's outline (see
+  /// FragmentMergeOptions::moved_distance); the plane tolerance when smaller.
+  double moved_distance = 0.0;
+};
+
 /// `mesh` with each flat face (see flat_faces, within 1e-6 of the mesh's bounding-box diagonal;
 /// `kind` all alike) re-triangulated from its outline: vertices inside a face go, and so do
 /// vertices where exactly two face outlines meet in a straight line (both faces drop them, so
 /// the mesh stays conforming). Corners, vertices on open and non-manifold edges and vertices of
-/// curved areas stay; a face whose re-triangulation would change its area by more than that
-/// distance times its outline's length keeps its triangles and all their vertices. Unused
+/// curved areas stay; a face whose re-triangulation would change its area by more than the
+/// moved distance times its outline's length keeps its triangles and all their vertices. Unused
 /// vertices are removed; materials travel with the triangles. Deterministic.
-TriangleMesh merge_flat_faces(const TriangleMesh& mesh);
+TriangleMesh merge_flat_faces(const TriangleMesh& mesh, const FlatFaceMergeOptions& options = {});
 
 }  // namespace dg

@@ -1,6 +1,7 @@
 #include "grammar/context_free.h"
 
 #include "geometry/cleaning.h"
+#include "geometry/flat_faces.h"
 #include "geometry/fragment_merge.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
@@ -589,7 +590,8 @@ class Builder {
     for (std::size_t c : children)
       for (std::uint32_t t : nodes_[c].piece) taken_[t] = 1;
     // The remaining triangles, renumbered, re-triangulated with only the vertices that the
-    // exemplar's corners and the terminal's own border need.
+    // exemplar's corners and the terminal's own border need; then each flat face as a whole
+    // (where a whole face cannot be, it keeps the first pass's triangles).
     TriangleMesh part;
     std::vector<std::uint32_t> origin;
     std::vector<char> corners;
@@ -616,7 +618,8 @@ class Builder {
         merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners,
                         {.straighten_open_borders = true, .moved_distance = snap_distance()})
             .mesh;
-    return without_unused_vertices(merged);
+    return merge_flat_faces(without_unused_vertices(merged),
+                            {.straighten_open_borders = true, .moved_distance = snap_distance()});
   }
 
   // The production of `node` (kNone: the axiom) with the given children; children must have

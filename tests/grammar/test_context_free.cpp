@@ -5,6 +5,7 @@
 #include "geometry/errors.h"
 
 #include "assets/generator/asset.h"
+#include "geometry/flat_faces.h"
 #include "geometry/topology.h"
 #include "support/mesh_distance.h"
 #include "support/shapes.h"
@@ -23,6 +24,7 @@
 #include <set>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <string_view>
 
@@ -511,6 +513,32 @@ TEST_CASE("facade(3x4): voxel-face seams give rules that rebuild the exemplar, v
     INFO(triangles << " triangles in pieces holding " << copies << " copies of the exemplar's area");
     CHECK(static_cast<double>(triangles) < 3.0 * copies * static_cast<double>(a.prepared.model.mesh.triangles.size()));
     CHECK(a.grammar.axiom.terminal.triangles.size() < 3 * a.prepared.model.mesh.triangles.size());
+  }
+  SECTION("no terminal keeps a vertex inside one of its flat faces") {
+    // The facade's walls are tessellated; the terminals' flat faces are re-triangulated from
+    // their outlines, so a vertex all of whose triangles lie in one flat face, with no open
+    // edge, is left over from the exemplar or from the cuts.
+    auto inner_vertices = [](const dg::TriangleMesh& mesh) {
+      const std::vector<std::uint32_t> face = dg::flat_faces(mesh, {}, 1e-6 * mesh.bounds().diagonal());
+      const dg::VertexTriangles around = dg::vertex_triangles(mesh);
+      std::size_t inner = 0;
+      for (std::uint32_t v = 0; v + 1 < around.first.size(); ++v) {
+        if (around.first[v] == around.first[v + 1]) continue;
+        bool one_face = true;
+        std::map<std::uint32_t, int> edge_uses;  // other vertex of each edge at v -> triangles on it
+        for (std::uint32_t i = around.first[v]; i < around.first[v + 1]; ++i) {
+          const std::uint32_t t = around.triangles[i];
+          one_face = one_face && face[t] == face[around.triangles[around.first[v]]];
+          for (std::uint32_t w : mesh.triangles[t])
+            if (w != v) ++edge_uses[w];
+        }
+        const bool closed = std::all_of(edge_uses.begin(), edge_uses.end(), [](const auto& e) { return e.second == 2; });
+        if (one_face && closed) ++inner;
+      }
+      return inner;
+    };
+    CHECK(inner_vertices(a.grammar.axiom.terminal) == 0);
+    for (const dg::ShapeProduction& p : a.grammar.productions) CHECK(inner_vertices(p.terminal) == 0);
   }
   SECTION("voxel-face seams survive the grammar file") {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-cf-voxel-seam-test";
