@@ -217,6 +217,50 @@ TEST_CASE("corpus: spiral staircase screw, railing baluster pitch, organic model
   }
 }
 
+TEST_CASE("corpus: the Quaternius bank's side translation by one column pitch is found with its multiples",
+          "[symmetry][corpus]") {
+  if (!corpus_available()) return;
+  const Detected d = detect_model(dg::read_model(kCorpus / "arch-quaternius-bank" / "bank.obj"));
+  const dg::TriangleMesh& mesh = d.prepared.model.mesh;
+  const dg::BoundingBox box = mesh.bounds();
+  // Ground truth from the mesh: the columns along the +x side, cut at mid height, are clusters
+  // of vertex z values (a column is under 20 wide, the gaps between columns over 30); the
+  // median gap between cluster centres is the column pitch.
+  std::vector<double> zs;
+  for (const Vec3& p : mesh.positions) {
+    const double height = (p.y() - box.min.y()) / (box.max.y() - box.min.y());
+    if (height > 0.4 && height < 0.6 && p.x() > box.max.x() - 0.15 * (box.max.x() - box.min.x())) zs.push_back(p.z());
+  }
+  std::sort(zs.begin(), zs.end());
+  std::vector<double> centres;
+  for (std::size_t i = 0; i < zs.size();) {
+    std::size_t j = i;
+    double sum = 0.0;
+    while (j < zs.size() && (j == i || zs[j] - zs[j - 1] < 15.0)) sum += zs[j++];
+    centres.push_back(sum / static_cast<double>(j - i));
+    i = j;
+  }
+  REQUIRE(centres.size() >= 5);
+  std::vector<double> gaps;
+  for (std::size_t i = 1; i < centres.size(); ++i) gaps.push_back(centres[i] - centres[i - 1]);
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+  const double pitch = gaps[gaps.size() / 2];
+  // The base, the roof and the column shafts repeat about one pitch apart (the asset places
+  // the capitals 0.4 eps further apart); the keypoint pairs of both vote together, and the
+  // translation must not be a blend that fits neither.
+  const double eps = d.prepared.surface.eps();
+  const dg::SymmetryFamily* sides = nullptr;
+  for (const auto& family : d.result.families)
+    if (family.kind == "translation" && std::abs(family.generator.translation.normalized().z()) > 0.999 &&
+        std::abs(family.generator.translation.norm() - pitch) < eps)
+      sides = &family;
+  INFO("column pitch " << pitch << ", eps " << eps);
+  REQUIRE(sides != nullptr);
+  for (int power = 2; power <= 4; ++power)
+    CHECK(std::find(sides->powers.begin(), sides->powers.end(), power) != sides->powers.end());
+  CHECK(d.result.symmetries[sides->members.front()].r_symmetric_fraction > 0.25);
+}
+
 namespace {
 
 // Teeth of a gear-like mesh counted from its outline: the largest distance from `axis` (through
