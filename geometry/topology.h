@@ -25,14 +25,16 @@ bool is_closed_and_oriented(const TriangleMesh& mesh);
 
 /// Component id per triangle: triangles sharing a vertex index are connected; components are
 /// numbered in order of their lowest triangle index. Writes the number of components when asked.
+std::vector<std::uint32_t> triangle_components(const TriangleMesh& mesh, std::size_t* component_count = nullptr);
+
 /// Triangles around each vertex: triangles[first[v] .. first[v + 1]) are those using vertex v,
-/// in index order (one using v twice is listed twice).
+/// in index order (one using v twice is listed twice); first has one entry per vertex plus one.
 struct VertexTriangles {
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> triangles;
 };
-VertexTriangles vertex_triangles(const TriangleMesh& mesh);
 
-std::vector<std::uint32_t> triangle_components(const TriangleMesh& mesh, std::size_t* component_count = nullptr);
+/// The triangles around each vertex of `mesh` (counting sort, O(vertices + triangles)).
+VertexTriangles vertex_triangles(const TriangleMesh& mesh);
 
 }  // namespace dg
