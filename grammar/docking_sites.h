@@ -3,7 +3,9 @@
 //
 // For a motion T with r-symmetric cells S = xi_r(T), every connected non-symmetric region is a
 // docker candidate D. Its docking site is the band of S cells around it (two cell layers, so
-// that the band's image under T still closes). The site is valid when its image T(site) also
+// that the band's image under T still closes; the image is every cell the moved band covers,
+// found from both sides, so it closes for motions that do not carry the voxel grid onto
+// itself). The site is valid when its image T(site) also
 // splits the model: the secondary docker D' is what T(site) encloses, i.e. every part of the
 // model cut off by T(site) that holds no image of the geometry just outside the site. When
 // T(site) does not split the model, neighbouring non-symmetric regions are added to the docker

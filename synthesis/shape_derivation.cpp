@@ -66,31 +66,12 @@ class Candidates {
   std::vector<Vec3> up_in_frame_;  // per production: the up axis in its lhs frame
 };
 
-}  // namespace
-
-bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options) {
-  if (grammar.empty() || options.exemplar_only) return false;
-  const Candidates choices(grammar, options.up);
-  std::vector<OpenSlot> open;
-  for (const ChildSlot& c : grammar.axiom.children) open.push_back({c, c.placement, 1});
-  while (!open.empty()) {
-    const OpenSlot slot = open.back();
-    open.pop_back();
-    if (slot.depth > options.max_depth) continue;
-    for (std::size_t p : choices.at(slot.slot.nonterminal, slot.world))
-      if (p != slot.slot.original_production) return true;
-    for (const ChildSlot& c : grammar.productions[slot.slot.original_production].children)
-      open.push_back({c, slot.world.after(c.placement), slot.depth + 1});
-  }
-  return false;
-}
-
-ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
-  if (grammar.empty()) throw std::invalid_argument("derive_shape: the grammar has no context-free rules");
-  const Candidates choices(grammar, options.up);
-
+// One derivation drawing from `random`; nothing when a slot's exemplar production, placed after
+// its random choices collided (or past the depth or triangle limits), would itself collide with
+// what an earlier random choice put there. With options.exemplar_only nothing is checked.
+std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, const Candidates& choices, double eps,
+                                           const ShapeDerivationOptions& options, Random& random) {
   ShapeDerivation result;
-  Random random(options.seed);
   const double seam_tolerance = options.seam_tolerance > 0 ? options.seam_tolerance : eps;
   PieceCollisions collisions(seam_tolerance);
   std::size_t triangles = 0;
@@ -136,8 +117,13 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     }
     if (!accepted) {
       const std::size_t original = slot.slot.original_production;
-      accepted.emplace(original, transformed(grammar.productions[original].terminal, slot.world));
-      collisions.add(accepted->second);
+      const ShapeProduction& p = grammar.productions[original];
+      TriangleMesh piece = transformed(p.terminal, slot.world);
+      if (options.exemplar_only)
+        collisions.add(piece);
+      else if (!collisions.add_unless_collides(piece, contact_of(grammar, p, slot.world, seam_tolerance)))
+        return std::nullopt;
+      accepted.emplace(original, std::move(piece));
     }
     result.productions.push_back(accepted->first);
     result.changed = result.changed || accepted->first != slot.slot.original_production;
@@ -148,6 +134,42 @@ ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, cons
     result.mesh = merge_flat_faces(result.mesh);
   }
   return result;
+}
+
+}  // namespace
+
+bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options) {
+  if (grammar.empty() || options.exemplar_only) return false;
+  const Candidates choices(grammar, options.up);
+  std::vector<OpenSlot> open;
+  for (const ChildSlot& c : grammar.axiom.children) open.push_back({c, c.placement, 1});
+  while (!open.empty()) {
+    const OpenSlot slot = open.back();
+    open.pop_back();
+    if (slot.depth > options.max_depth) continue;
+    for (std::size_t p : choices.at(slot.slot.nonterminal, slot.world))
+      if (p != slot.slot.original_production) return true;
+    for (const ChildSlot& c : grammar.productions[slot.slot.original_production].children)
+      open.push_back({c, slot.world.after(c.placement), slot.depth + 1});
+  }
+  return false;
+}
+
+ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
+  if (grammar.empty()) throw std::invalid_argument("derive_shape: the grammar has no context-free rules");
+  const Candidates choices(grammar, options.up);
+  Random random(options.seed);
+  std::size_t restarts = 0;
+  for (; restarts <= options.restarts; ++restarts)
+    if (std::optional<ShapeDerivation> derived = derive_once(grammar, choices, eps, options, random)) {
+      derived->restarts = restarts;
+      return std::move(*derived);
+    }
+  ShapeDerivationOptions rebuild = options;
+  rebuild.exemplar_only = true;
+  ShapeDerivation exemplar = *derive_once(grammar, choices, eps, rebuild, random);
+  exemplar.restarts = restarts;
+  return exemplar;
 }
 
 }  // namespace dg

@@ -5,6 +5,9 @@
 // seams allowed). A colliding choice is retried; after `retries` failures the slot gets the
 // production that rebuilds the exemplar there. Past `max_depth` or `max_triangles` every slot
 // gets its exemplar production, which always ends (the exemplar's inclusion tree is finite).
+// Such an exemplar production is checked too: where an earlier random choice left no room for
+// it, the derivation starts over (the random stream goes on), and after `restarts` such starts
+// the exemplar itself is rebuilt, so a derived model never holds colliding pieces.
 
 #include "grammar/context_free.h"
 
@@ -18,6 +21,7 @@ namespace dg {
 struct ShapeDerivationOptions {
   std::uint64_t seed = 1;
   int retries = 10;                          ///< paper: 10
+  std::size_t restarts = 10;                 ///< derivations started over before the exemplar is rebuilt
   int max_depth = 24;                        ///< nesting depth of slots
   std::size_t max_triangles = 5'000'000;     ///< placed triangles before only exemplar productions are used
   bool exemplar_only = false;                ///< always take the exemplar's production (rebuilds the exemplar)
@@ -35,6 +39,9 @@ struct ShapeDerivation {
   bool changed = false;                     ///< some slot took another production than the exemplar's
   std::size_t collisions_retried = 0;       ///< random choices rejected for colliding
   std::size_t fallbacks = 0;                ///< slots that got the exemplar production after `retries` failures
+  /// Derivations started over because an exemplar production found no room; options.restarts + 1
+  /// when all of them failed and the result is the exemplar rebuilt.
+  std::size_t restarts = 0;
   bool depth_limited = false;               ///< max_depth was reached somewhere
   bool triangle_limited = false;            ///< max_triangles was reached
   /// Without welding: the non-terminal whose production placed each triangle (kNoProduction

@@ -3,6 +3,7 @@
 #include "geometry/cleaning.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 
@@ -15,7 +16,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using dg::InputError;
@@ -25,13 +25,8 @@ using dg::Vec3;
 
 namespace {
 
-/// Fresh, empty folder for one test case's files.
-fs::path test_folder(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("dockgrammar-io-" + std::to_string(::getpid())) / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
+/// Fresh, empty folder for one test case's files (one per case, so cases may run in parallel).
+fs::path test_folder(const std::string& name) { return dg::test::fresh_folder("dockgrammar-io-" + name); }
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);

@@ -1,6 +1,7 @@
 #include "synthesis/render.h"
 
 #include "geometry/image.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 
@@ -68,8 +69,7 @@ TEST_CASE("images blend lines and encode to PNG files atomically", "[synthesis]"
   CHECK(bytes[1] == 'P');
   CHECK(bytes[2] == 'N');
   CHECK(bytes[3] == 'G');
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-render-test";
-  std::filesystem::create_directories(folder);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-png-writer-test");
   const std::filesystem::path file = folder / "line.png";
   dg::write_png(file, image);
   CHECK(std::filesystem::file_size(file) == bytes.size());

@@ -114,6 +114,7 @@ void add_generate_command(CLI::App& app) {
                           {"productions", productions},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
+                          {"restarts", d.restarts},
                           {"depth_limited", d.depth_limited},
                           {"triangle_limited", d.triangle_limited},
                           {"triangles", mesh.triangles.size()}});
