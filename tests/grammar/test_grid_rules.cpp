@@ -70,6 +70,28 @@ TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the g
   CHECK(area < a.prepared.model.mesh.area());
 }
 
+TEST_CASE("facade(3 x 4) turned about a general axis: the same 2-grid along the turned pitches", "[grammar][grid]") {
+  // Its motions no longer carry the voxel grid onto itself; the grid must not depend on that.
+  dg::Model turned;
+  turned.mesh = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.54, Vec3::UnitZ()) * Eigen::AngleAxisd(0.40, Vec3::UnitY()) *
+                                    Eigen::AngleAxisd(0.30, Vec3::UnitX()))
+                                       .toRotationMatrix();
+  for (Vec3& p : turned.mesh.positions) p = rotation * p;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(turned));
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 2);
+  // The detected pitches are fitted to the mesh: within 1e-3 of the turned generator pitches.
+  auto count_along = [&](const Vec3& t) {
+    for (const auto& d : grids[0].directions)
+      if ((d.translation - t).norm() < 1e-3 || (d.translation + t).norm() < 1e-3) return d.count;
+    return -1;
+  };
+  CHECK(count_along(rotation * Vec3(3.0, 0, 0)) == 3);
+  CHECK(count_along(rotation * Vec3(0, 0, 3.0)) == 4);
+}
+
 TEST_CASE("messy facade: the clean facade's grid, 3 columns and 4 rows", "[grammar][grid]") {
   // Back-to-back duplicate faces no longer break symmetry (planes compare up to sign); the
   // non-manifold fin leaves a few asymmetric cells in a column, which the slab test absorbs

@@ -87,7 +87,7 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_triangles = options->max_triangles;
     const MeshRenderOptions picture = picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
-    std::size_t limited = 0;
+    std::size_t limited = 0, rebuilt = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t n = 0; n < options->count; ++n) {
@@ -106,6 +106,7 @@ void add_generate_command(CLI::App& app) {
       nlohmann::json productions = nlohmann::json::array();
       for (std::size_t p : d.productions) productions.push_back(p);
       if (d.depth_limited || d.triangle_limited) ++limited;
+      if (d.restarts > variant_options.derivation.restarts) ++rebuilt;
       variants.push_back({{"index", index},
                           {"file", file},
                           {"seed", plan.seed},
@@ -124,6 +125,10 @@ void add_generate_command(CLI::App& app) {
     if (limited > 0 && !options->quiet)
       fmt::print(stderr, "note: {} variant(s) reached --max-depth or --max-triangles; their deeper slots kept the exemplar's geometry\n",
                  limited);
+    if (rebuilt > 0 && !options->quiet)
+      fmt::print(stderr,
+                 "note: {} variant(s) are the exemplar rebuilt: {} derivations in a row left some exemplar piece no room\n",
+                 rebuilt, variant_options.derivation.restarts + 1);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
                                      {"count", options->count},     {"orientation", options->orientation},
                                      {"variants", variants}};

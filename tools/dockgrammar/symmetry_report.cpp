@@ -55,6 +55,10 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
   out += "\nfamilies of the symmetries above (generator, repeats found):\n";
   std::vector<bool> shown(result.families.size(), false);
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) shown[result.symmetries[i].family] = true;
+  bool only_slides = false;
+  for (std::size_t f = 0; f < result.families.size(); ++f) only_slides = only_slides || (shown[f] && result.families[f].count == 0);
+  if (only_slides)
+    out += "  (x0: the generator only slides parts along themselves, such as walls, floors and rails; no unit repeats)\n";
   for (std::size_t f = 0; f < result.families.size(); ++f) {
     if (!shown[f]) continue;
     const SymmetryFamily& family = result.families[f];
