@@ -3,6 +3,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
 #include "support/corpus.h"
+#include "support/shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -74,10 +75,8 @@ TEST_CASE("facade(3 x 4) turned about a general axis: the same 2-grid along the 
   // Its motions no longer carry the voxel grid onto itself; the grid must not depend on that.
   dg::Model turned;
   turned.mesh = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
-  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.54, Vec3::UnitZ()) * Eigen::AngleAxisd(0.40, Vec3::UnitY()) *
-                                    Eigen::AngleAxisd(0.30, Vec3::UnitX()))
-                                       .toRotationMatrix();
-  for (Vec3& p : turned.mesh.positions) p = rotation * p;
+  dg::test::turn_generally(turned.mesh);
+  const Eigen::Matrix3d rotation = dg::test::general_rotation();
   const dg::PreparedModel prepared = dg::prepare_model(std::move(turned));
   const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
   REQUIRE(grids.size() == 1);

@@ -49,4 +49,15 @@ void append(TriangleMesh& mesh, const TriangleMesh& part) {
   for (Triangle t : part.triangles) mesh.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
 }
 
+Eigen::Matrix3d general_rotation() {
+  return (Eigen::AngleAxisd(0.54, Vec3::UnitZ()) * Eigen::AngleAxisd(0.40, Vec3::UnitY()) *
+          Eigen::AngleAxisd(0.30, Vec3::UnitX()))
+      .toRotationMatrix();
+}
+
+void turn_generally(TriangleMesh& mesh) {
+  const Eigen::Matrix3d rotation = general_rotation();
+  for (Vec3& p : mesh.positions) p = rotation * p;
+}
+
 }  // namespace dg::test

@@ -14,4 +14,11 @@ TriangleMesh make_sphere(const Vec3& centre, double radius, int rings, int segme
 /// Appends `part` to `mesh` (indices shifted).
 void append(TriangleMesh& mesh, const TriangleMesh& part);
 
+/// A rotation about no coordinate axis (0.54, 0.40 and 0.30 rad about z, y and x): a model
+/// turned by it has no motion that carries the voxel grid onto itself.
+Eigen::Matrix3d general_rotation();
+
+/// Turns every vertex of `mesh` by general_rotation() about the origin.
+void turn_generally(TriangleMesh& mesh);
+
 }  // namespace dg::test
