@@ -142,34 +142,6 @@ struct MotionContext {
   double r;
 };
 
-// Marks in `image` (one flag per cell) the cells that `band` covers once moved by the motion:
-// the cells its centres map to, and the cells near those whose centres map back into the band.
-// Mapped centres alone leave holes where the motion does not carry the voxel grid onto itself (a
-// pitch that is no multiple of eps, a model at an angle to the axes), and a band with holes does
-// not split the model. False when a centre maps off the surface.
-bool image_of_band(const MotionContext& m, const Cells& band, std::vector<char>& image) {
-  const VoxelSurface& surface = m.surface;
-  image.assign(surface.cell_count(), 0);
-  const std::vector<char> in_band = mask_of(band, surface.cell_count());
-  const RigidTransform back = m.transform.inverse();
-  for (std::uint32_t c : band) {
-    const Vec3 mapped = m.transform.apply(surface.centre(c));
-    const std::int64_t hit = nearest_cell(surface, mapped);
-    if (hit < 0) return false;
-    image[static_cast<std::uint32_t>(hit)] = 1;
-    const VoxelCoord v = surface.voxel_of(mapped);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const std::int64_t near = surface.find({v[0] + dx, v[1] + dy, v[2] + dz});
-          if (near < 0 || image[static_cast<std::uint32_t>(near)]) continue;
-          const std::int64_t source = m.matcher.image_cell(static_cast<std::uint32_t>(near), back);
-          if (source >= 0 && in_band[static_cast<std::uint32_t>(source)]) image[static_cast<std::uint32_t>(near)] = 1;
-        }
-  }
-  return true;
-}
-
 // The docking site around docker cells `docker`, or nothing when it is not valid.
 std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker, Cells& touched_by_image) {
   const VoxelSurface& surface = m.surface;
@@ -189,8 +161,9 @@ std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker,
   if (outside.empty()) return std::nullopt;  // nothing would remain outside the docker
 
   // The image of the site, and the images of the cells just outside it.
+  // The band's image closes even where T does not carry the voxel grid onto itself.
   std::vector<char> image_site;
-  if (!image_of_band(m, site, image_site)) return std::nullopt;
+  if (m.matcher.image_of_cells(site, m.transform, image_site) > 0) return std::nullopt;
   touched_by_image = cells_of(image_site);
   std::vector<char> outer(n, 0);
   for (std::uint32_t c : outside) {

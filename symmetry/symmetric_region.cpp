@@ -52,6 +52,45 @@ std::int64_t CellMatcher::image_cell(std::uint32_t cell, const RigidTransform& t
   return nearest_cell(surface_, t.apply(surface_.centre(cell)));
 }
 
+std::size_t CellMatcher::image_of_cells(std::span<const std::uint32_t> cells, const RigidTransform& t,
+                                        std::vector<char>& image) const {
+  enum : char { outside = 0, inside = 1, tested_outside = 2 };
+  image.assign(surface_.cell_count(), outside);
+  std::vector<char> in_cells(surface_.cell_count(), 0);
+  for (std::uint32_t c : cells) in_cells[c] = 1;
+  const RigidTransform back = t.inverse();
+  std::vector<std::uint32_t> rejected;  // tested cells whose centre maps back outside `cells`
+  std::size_t off_surface = 0;
+  for (std::uint32_t c : cells) {
+    const Vec3 mapped = t.apply(surface_.centre(c));
+    const std::int64_t hit = nearest_cell(surface_, mapped);
+    if (hit < 0) {
+      ++off_surface;
+      continue;
+    }
+    image[static_cast<std::uint32_t>(hit)] = inside;
+    const VoxelCoord v = surface_.voxel_of(mapped);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const std::int64_t found = surface_.find({v[0] + dx, v[1] + dy, v[2] + dz});
+          if (found < 0 || image[static_cast<std::uint32_t>(found)] != outside) continue;
+          const auto near = static_cast<std::uint32_t>(found);
+          const std::int64_t source = image_cell(near, back);
+          if (source >= 0 && in_cells[static_cast<std::uint32_t>(source)]) {
+            image[near] = inside;
+          } else {
+            image[near] = tested_outside;
+            rejected.push_back(near);
+          }
+        }
+  }
+  // A rejected cell may have become an image cell of a later centre: only the others go back.
+  for (std::uint32_t c : rejected)
+    if (image[c] == tested_outside) image[c] = outside;
+  return off_surface;
+}
+
 namespace {
 
 // The cells where mapped geometry may lie: first the voxel holding the image of the centre

@@ -47,6 +47,13 @@ class CellMatcher {
   /// Cell of the voxel holding t(centre(cell)), or the nearest occupied voxel around it; -1 if none.
   std::int64_t image_cell(std::uint32_t cell, const RigidTransform& t) const;
 
+  /// The cells that `cells` cover once moved by `t`, as one flag per cell in `image`: the image
+  /// cells of their centres, and the cells of the 3x3x3 blocks around those images whose own
+  /// centres map back (under t^-1) into `cells`. Mapped centres alone leave holes where t does
+  /// not carry the voxel grid onto itself (a pitch that is no multiple of eps, a model at an
+  /// angle to the axes). Returns how many centres of `cells` map off the surface.
+  std::size_t image_of_cells(std::span<const std::uint32_t> cells, const RigidTransform& t, std::vector<char>& image) const;
+
   /// Symmetric in both directions: the cell maps onto the surface under t, and its image cell
   /// maps back onto the surface under `inverse` (= t^-1).
   bool symmetric(std::uint32_t cell, const RigidTransform& t, const RigidTransform& inverse) const;

@@ -127,10 +127,10 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
     std::vector<std::uint32_t> state(surface.cell_count(), grey);
     for (std::uint32_t c : s.region.symmetric_cells) state[c] = pink;
     for (std::uint32_t c : s.region.r_symmetric_cells) state[c] = red;
-    for (std::uint32_t c : s.region.r_symmetric_cells) {
-      const std::int64_t image = matcher.image_cell(c, s.transform);
-      if (image >= 0) state[static_cast<std::size_t>(image)] |= blue;
-    }
+    std::vector<char> image;
+    matcher.image_of_cells(s.region.r_symmetric_cells, s.transform, image);
+    for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+      if (image[c]) state[c] |= blue;
     // Triangles whose cells share a state stay whole; only those across state borders are cut.
     std::vector<std::uint32_t> piece_states;
     const TriangleMesh pieces = cut_where_cell_keys_differ(prepared.model.mesh, surface, state, piece_states);
