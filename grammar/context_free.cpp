@@ -431,7 +431,7 @@ class Builder {
     std::vector<char> inside(cut.mesh.triangles.size(), 0);
     for (std::uint32_t t = 0; t < cut.mesh.triangles.size(); ++t)
       if (in_docker(cut.mesh, node, t)) piece.push_back(t), inside[t] = 1;
-    return in_frame(seam_segments(cut.mesh, triangles_across(cut.mesh), piece, inside), node);
+    return in_frame(seam_segments(cut.mesh, edge_users(cut.mesh), piece, inside), node);
   }
 
   // Before the cumulative cut: locations whose own seam curve lies more than twice the fit
@@ -495,11 +495,11 @@ class Builder {
   // each location, moved into the non-terminal's frame, must be that of its first location
   // (within kSeamFitFraction of eps). Records each class's largest misfit.
   void check_fit() {
-    const std::vector<std::int64_t> across = triangles_across(cut_);
+    const EdgeUsers users = edge_users(cut_);
     std::vector<char> inside(cut_.triangles.size(), 0);
     auto curve = [&](const Node& n) {
       for (std::uint32_t t : n.piece) inside[t] = 1;
-      std::vector<Segment> segments = seam_segments(cut_, across, n.piece, inside);
+      std::vector<Segment> segments = seam_segments(cut_, users, n.piece, inside);
       for (std::uint32_t t : n.piece) inside[t] = 0;
       return in_frame(std::move(segments), n);
     };

@@ -54,35 +54,42 @@ double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>
 
 }  // namespace
 
-std::vector<std::int64_t> triangles_across(const TriangleMesh& mesh) {
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> uses;  // edge key, corner 3t+k
+EdgeUsers edge_users(const TriangleMesh& mesh) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t + k
   uses.reserve(3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const auto [lo, hi] = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
-      uses.push_back({(static_cast<std::uint64_t>(lo) << 32) | hi, 3 * t + k});
+      uses.push_back({(static_cast<std::uint64_t>(lo) << 32) | hi, static_cast<std::uint32_t>(3 * t + k)});
     }
   std::sort(uses.begin(), uses.end());
-  std::vector<std::int64_t> across(3 * mesh.triangles.size(), -1);
+  EdgeUsers users;
+  users.corners.resize(uses.size());
+  users.group_begin.resize(uses.size());
+  users.group_end.resize(uses.size());
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].first == uses[i].first) ++j;
-    if (j - i == 2) {
-      across[uses[i].second] = static_cast<std::int64_t>(uses[i + 1].second / 3);
-      across[uses[i + 1].second] = static_cast<std::int64_t>(uses[i].second / 3);
+    for (std::size_t u = i; u < j; ++u) {
+      users.corners[u] = uses[u].second;
+      users.group_begin[uses[u].second] = static_cast<std::uint32_t>(i);
+      users.group_end[uses[u].second] = static_cast<std::uint32_t>(j);
     }
     i = j;
   }
-  return across;
+  return users;
 }
 
-std::vector<Segment> seam_segments(const TriangleMesh& mesh, const std::vector<std::int64_t>& across,
+std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& users,
                                    const std::vector<std::uint32_t>& piece, const std::vector<char>& inside) {
   std::vector<Segment> segments;
   for (std::uint32_t t : piece)
-    for (int k = 0; k < 3; ++k) {
-      const std::int64_t other = across[3 * static_cast<std::size_t>(t) + k];
-      if (other < 0 || inside[static_cast<std::size_t>(other)]) continue;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t corner = 3 * t + k;
+      bool meets_outside = false;
+      for (std::uint32_t u = users.group_begin[corner]; u < users.group_end[corner] && !meets_outside; ++u)
+        meets_outside = !inside[users.corners[u] / 3];
+      if (!meets_outside) continue;
       segments.push_back({mesh.positions[mesh.triangles[t][k]], mesh.positions[mesh.triangles[t][(k + 1) % 3]]});
     }
   return segments;

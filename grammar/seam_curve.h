@@ -25,14 +25,22 @@ inline constexpr double kSeamFitFraction = 1e-2;
 /// Smallest weld distance (fraction of eps) for the seams of derived pieces: float32 rounding.
 inline constexpr double kSeamWeldFloorFraction = 1e-4;
 
-/// For every triangle corner k of `mesh`, the triangle across edge (k, k+1), or -1 when that
-/// edge is used by one triangle only or by more than two.
-std::vector<std::int64_t> triangles_across(const TriangleMesh& mesh);
+/// The triangles around every edge of a mesh, non-manifold edges included (real assets have
+/// fins and back-to-back doubles, whose edges three or more triangles use).
+struct EdgeUsers {
+  /// Triangle corners 3t + k (edge from corner k to k + 1), grouped by edge.
+  std::vector<std::uint32_t> corners;
+  /// Per corner: its edge's group, corners[group_begin[c] .. group_end[c]).
+  std::vector<std::uint32_t> group_begin, group_end;
+};
 
-/// Edges between a flagged triangle (`inside`, one flag per triangle) and an unflagged one:
-/// the curve along which the flagged piece was cut from the rest. Edges on the model's own
-/// border are not part of it.
-std::vector<Segment> seam_segments(const TriangleMesh& mesh, const std::vector<std::int64_t>& across,
+/// The users of every edge of `mesh`.
+EdgeUsers edge_users(const TriangleMesh& mesh);
+
+/// Edges between a flagged triangle (`inside`, one flag per triangle) and an unflagged one
+/// (any of them, at an edge that more than two triangles use): the curve along which the flagged
+/// piece was cut from the rest. Edges on the model's own border are not part of it.
+std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& users,
                                    const std::vector<std::uint32_t>& piece, const std::vector<char>& inside);
 
 /// How far apart two seam curves lie (model units): the largest distance from an end or
