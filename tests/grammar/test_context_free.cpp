@@ -308,6 +308,20 @@ std::optional<Analysed> analyse_corpus(const std::string& relative) {
   return analyse_model(dg::read_model(*path));
 }
 
+// Variants of seeds variant_seed(1, 0 .. count - 1) pass verify against the exemplar.
+void check_variants_verify(const Analysed& a, std::uint64_t count) {
+  for (std::uint64_t i = 0; i < count; ++i) {
+    dg::ShapeDerivationOptions options;
+    options.seed = dg::variant_seed(1, i);
+    dg::Model exemplar, variant;
+    exemplar.mesh = a.prepared.model.mesh;
+    variant.mesh = dg::derive_shape(a.grammar, a.prepared.surface.eps(), options).mesh;
+    const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(variant));
+    INFO("seed " << options.seed << ": " << report.similarity.similar << " of " << report.similarity.samples << " samples r-similar");
+    CHECK(report.pass);
+  }
+}
+
 TEST_CASE("corpus: Kenney building-small-c gets context-free rules whose variants verify", "[grammar][context_free][corpus]") {
   // Its locations fit only up to float32 rounding (up to 7e-8 model units, 1e-5 eps); with
   // the seams cut at 1e-6 eps it had no rule once prepare_model split its T-junctions.
@@ -320,15 +334,7 @@ TEST_CASE("corpus: Kenney building-small-c gets context-free rules whose variant
   // terminal held 49 times the exemplar's triangles when they did not).
   CHECK(a->grammar.axiom.terminal.triangles.size() < 3 * a->prepared.model.mesh.triangles.size());
   // The exemplar is open and self-intersects, so verify asks only for r-similarity of them.
-  for (std::uint64_t i = 0; i < 3; ++i) {
-    dg::ShapeDerivationOptions options;
-    options.seed = dg::variant_seed(1, i);
-    dg::Model exemplar, variant;
-    exemplar.mesh = a->prepared.model.mesh;
-    variant.mesh = dg::derive_shape(a->grammar, a->prepared.surface.eps(), options).mesh;
-    INFO("seed " << options.seed);
-    CHECK(dg::verify_models(std::move(exemplar), std::move(variant)).pass);
-  }
+  check_variants_verify(*a, 3);
 }
 
 TEST_CASE("corpus: the Blendswap pallet's rules, if any, rebuild the exemplar clean", "[grammar][context_free][corpus]") {
@@ -359,16 +365,7 @@ TEST_CASE("corpus: the Blendswap radiator's context-free variants verify", "[gra
   const std::optional<Analysed> a = analyse_corpus("meshes/furn-blendswap-radiator1/radiator1.obj");
   if (!a) return;
   if (a->grammar.empty()) return;  // no rule is no wrong rule
-  for (std::uint64_t i = 0; i < 4; ++i) {
-    dg::ShapeDerivationOptions options;
-    options.seed = dg::variant_seed(1, i);
-    dg::Model exemplar, variant;
-    exemplar.mesh = a->prepared.model.mesh;
-    variant.mesh = dg::derive_shape(a->grammar, a->prepared.surface.eps(), options).mesh;
-    const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(variant));
-    INFO("seed " << options.seed << ": " << report.similarity.similar << " of " << report.similarity.samples << " samples r-similar");
-    CHECK(report.pass);
-  }
+  check_variants_verify(*a, 4);
 }
 
 TEST_CASE("20 random pipe-tree variants: closed, no self-intersections, verify passes", "[grammar][context_free][verify]") {
