@@ -699,8 +699,9 @@ class Builder {
     }
     // The axiom: of the roots' random independent sets whose pieces add up to the model, the
     // one from which the most non-terminals can be reached (the first such in trial order).
+    // Without such a set, the whole model as one terminal (built only then: merging its flat
+    // faces costs as much as the model).
     const UnfoldedChildren roots = unfolded(kept_only(roots_));
-    grammar.axiom = production(kNone, {});
     std::size_t most_reached = 0;
     for (const auto& set : random_independent_sets(roots, options_.independent_set_trials, random)) {
       std::vector<std::size_t> starts;
@@ -713,6 +714,7 @@ class Builder {
       grammar.axiom = std::move(axiom);
       most_reached = reached;
     }
+    if (most_reached == 0) grammar.axiom = production(kNone, {});
     if (opens_holes(grammar.axiom)) {  // even the exemplar rebuilt from its pieces would have holes
       grammar = {};
       stats.axiom_with_holes = true;
