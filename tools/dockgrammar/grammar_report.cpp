@@ -20,7 +20,9 @@ namespace {
 
 // What analyze does not build yet (one sentence, for the summary, the JSON and the report).
 std::string missing_text() {
-  return fmt::format("grids of pure rotations (no slide along the axis) are not built; docking sites that slide along "
+  return fmt::format("grids of pure rotations (no slide along the axis) are not built; grid planes cross the whole model, "
+                     "so a repetition that parts not repeating with it lie across (the figures on one rod of a table "
+                     "football, among the other rods' figures) gives no grid; docking sites that slide along "
                      "themselves, or whose docker cut at one location lies more than {:g} eps from the seam at the other, "
                      "give no context-free production",
                      kSeamFitFraction);
