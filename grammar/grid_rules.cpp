@@ -1,6 +1,7 @@
 #include "grammar/grid_rules.h"
 
 #include "grammar/asymmetric_spans.h"
+#include "grammar/whole_parts.h"
 #include "geometry/flat_faces.h"
 #include "geometry/fragment_merge.h"
 #include "geometry/slab_cut.h"
@@ -290,7 +291,8 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       if (better()) {
         // A translation's generator is kept exact (no rotation noise from the detector's fit).
         const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-        best = GridDirection{motion, t, d, pitch, first, count, 0, 0, symmetry_index};
+        best = GridDirection{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
+                             .symmetry = symmetry_index};
         best_clearance = clearance;
         best_vertices = vertices;
         best_crossed = crossed;
@@ -362,6 +364,124 @@ std::vector<char> drop_twins(const TriangleMesh& mesh, TriangleMesh& sheet) {
   return doubled;
 }
 
+// A family's members, generator first, then by power: a generator can be a motion that maps only
+// outlines onto outlines (half a window pitch on a painted wall), while its square repeats whole
+// units. Larger powers of a working generator would give fewer units.
+std::vector<std::size_t> members_by_power(const SymmetryFamily& family) {
+  std::vector<std::size_t> by_power(family.members.size());
+  std::iota(by_power.begin(), by_power.end(), std::size_t{0});
+  std::stable_sort(by_power.begin(), by_power.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(family.powers[a]) < std::abs(family.powers[b]);
+  });
+  return by_power;
+}
+
+// Extent of a set of triangles along a direction and in space.
+struct Extent {
+  BoundingBox box;
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  double weighted_centre = 0.0, area = 0.0;  // area-weighted position of the triangle centres
+};
+
+// Whether two boxes, the first moved by `shift` and both grown by `margin`, overlap.
+bool boxes_meet(const BoundingBox& a, const Vec3& shift, const BoundingBox& b, double margin) {
+  return ((a.min + shift).array() < (b.max + Vec3::Constant(2 * margin)).array()).all() &&
+         (b.min.array() < (a.max + shift + Vec3::Constant(2 * margin)).array()).all();
+}
+
+// Places the groups of parts kept whole along `direction` (found on the rest of the model): a
+// group whose centre lies before the middle of the units goes with the head, else with the tail.
+// Fails when no unit holds a part (not kept whole) that lies inside it, or a group reaches across
+// all units. Sets the fewest units at which the groups moved with the tail stay more than r from
+// those placed with the head and out of the head's slab, and the head's groups out of the tail's.
+bool place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const WholeParts& whole, double r) {
+  const Vec3& d = direction.direction;
+  const double first = direction.cut, last = direction.cut + direction.count * direction.pitch;
+  std::map<std::uint32_t, Extent> groups;
+  std::vector<Extent> parts(whole.kept.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::uint32_t p = whole.part[t];
+    Extent& e = whole.kept[p] ? groups[whole.group[p]] : parts[p];
+    const auto corners = mesh.corners(t);
+    for (const Vec3& x : corners) {
+      e.box.add(x);
+      e.lo = std::min(e.lo, d.dot(x));
+      e.hi = std::max(e.hi, d.dot(x));
+    }
+    const double area = 0.5 * mesh.area_vector(t).norm();
+    e.weighted_centre += area * d.dot((corners[0] + corners[1] + corners[2]) / 3.0);
+    e.area += area;
+  }
+  const double margin = 1e-6 * direction.pitch;
+  const bool unit_holds_a_part = std::any_of(parts.begin(), parts.end(), [&](const Extent& e) {
+    if (e.area <= 0.0 || e.lo <= first + margin || e.hi >= last - margin) return false;
+    return std::floor((e.lo - first) / direction.pitch) == std::floor((e.hi - first) / direction.pitch);
+  });
+  if (!unit_holds_a_part) return false;
+  const double middle = 0.5 * (first + last);
+  std::vector<const Extent*> head, tail;
+  std::map<std::uint32_t, bool> in_head;
+  for (const auto& [group, e] : groups) {
+    in_head[group] = e.weighted_centre < middle * e.area;
+    (in_head[group] ? head : tail).push_back(&e);
+  }
+  int fewest = 0;
+  for (const Extent* e : head) {
+    if (e->hi + r > last) return false;
+    fewest = std::max(fewest, static_cast<int>(std::ceil((e->hi + r - first) / direction.pitch)));
+  }
+  for (const Extent* e : tail) {
+    if (e->lo - r < first) return false;
+    fewest = std::max(fewest, direction.count - static_cast<int>(std::floor((e->lo - r - first) / direction.pitch)));
+  }
+  // Between those bounds a tail group moved back may still come near a head group.
+  for (int units = direction.count - 1; units >= fewest; --units) {
+    const Vec3 back = -(direction.count - units) * direction.translation;
+    const bool meets = std::any_of(tail.begin(), tail.end(), [&](const Extent* t) {
+      return std::any_of(head.begin(), head.end(), [&](const Extent* h) { return boxes_meet(t->box, back, h->box, r); });
+    });
+    if (meets) {
+      fewest = units + 1;
+      break;
+    }
+  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::uint32_t p = whole.part[t];
+    if (whole.kept[p]) (in_head[whole.group[p]] ? direction.whole_in_head : direction.whole_in_tail).push_back(static_cast<std::uint32_t>(t));
+  }
+  direction.fewest_units_for_whole_parts = fewest;
+  return true;
+}
+
+// Members of a family tried for a row of parts: the generator and its square (each builds the
+// voxel surface of the rest of the model and tests its every cell).
+constexpr std::size_t kRowMembersTried = 2;
+
+// The translation with the most units whose planes cut the model but for parts kept whole (for
+// each family, the first member by power that gives one).
+std::optional<GridDirection> row_of_parts(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                          const GridOptions& options) {
+  std::optional<GridDirection> best;
+  for (const SymmetryFamily& family : symmetries.families) {
+    if (family.kind != "translation" || family.count == 0) continue;  // count 0: it only slides walls and rails
+    const std::vector<std::size_t> by_power = members_by_power(family);
+    for (std::size_t i = 0; i < std::min(by_power.size(), kRowMembersTried); ++i) {
+      const std::size_t member = family.members[by_power[i]];
+      const DetectedSymmetry& symmetry = symmetries.symmetries[member];
+      const Vec3& t = symmetry.transform.translation;
+      if (t.normalized().cwiseAbs().dot(prepared.cleaning.bounds.size()) < options.min_repeats * t.norm()) continue;
+      const WholeParts whole = whole_parts(prepared, symmetry);
+      if (whole.empty()) continue;
+      std::optional<GridDirection> direction =
+          grid_direction(whole.rest, whole.motion, member, options.min_repeats, options.max_slab_asymmetry);
+      if (!direction || !place_whole_parts(*direction, prepared.model.mesh, whole, prepared.surface.r())) continue;
+      if (!best || direction->count > best->count) best = std::move(direction);
+      break;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 int slab_class(std::size_t slab, const GridDirection& direction) {
@@ -388,14 +508,7 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     report_progress(progress, "grid rules", static_cast<double>(f) / static_cast<double>(symmetries.families.size()));
     const SymmetryFamily& family = symmetries.families[f];
     if (family.kind != "translation" && family.kind != "screw") continue;
-    // The generator first, then its powers until one gives a direction: a generator can be a
-    // motion that maps only outlines onto outlines (half a window pitch on a painted wall), while
-    // its square repeats whole units. Larger powers of a working generator would give fewer units.
-    std::vector<std::size_t> by_power(family.members.size());
-    std::iota(by_power.begin(), by_power.end(), std::size_t{0});
-    std::stable_sort(by_power.begin(), by_power.end(), [&](std::size_t a, std::size_t b) {
-      return std::abs(family.powers[a]) < std::abs(family.powers[b]);
-    });
+    const std::vector<std::size_t> by_power = members_by_power(family);
     std::optional<GridDirection> direction;
     for (std::size_t m : by_power) {
       direction = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m],
@@ -439,6 +552,12 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry))
       grid.directions.push_back(*direction);
   }
+  // No translation cuts across the whole model: a row of parts may, keeping other parts whole.
+  if (grid.directions.empty())
+    if (std::optional<GridDirection> row = row_of_parts(prepared, symmetries, options)) {
+      grid.min_count = row->fewest_units_for_whole_parts;
+      grid.directions.push_back(std::move(*row));
+    }
   if (!grid.directions.empty()) grids.push_back(std::move(grid));
   // A screw commutes only with motions along its own axis, so each screw is a 1-grid of its own;
   // screws along the same axis (powers of one another, one screw found twice, or an axis the
@@ -454,7 +573,13 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   return grids;
 }
 
+namespace {
+GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, double eps);
+}  // namespace
+
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  if (grid.directions.size() == 1 && !(grid.directions[0].whole_in_head.empty() && grid.directions[0].whole_in_tail.empty()))
+    return cut_around_whole_parts(mesh, grid, eps);
   TriangleMesh cut;
   // Back-to-back double faces are cut as one sheet and doubled again at the end, so both sides
   // stay exact duplicates (and their edges manifold for the merge below).
@@ -500,6 +625,42 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
   result.mesh = without_unused_vertices(result.mesh);
   return result;
 }
+
+namespace {
+
+// cut_along_grid for a 1-grid that keeps parts whole: the rest cut along the planes, the parts
+// appended uncut in the head's slab 0 or the tail's slab count + 1.
+GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  const GridDirection& direction = grid.directions[0];
+  std::vector<char> whole(mesh.triangles.size(), 0);
+  for (std::uint32_t t : direction.whole_in_head) whole[t] = 1;
+  for (std::uint32_t t : direction.whole_in_tail) whole[t] = 2;
+  std::vector<std::size_t> rest;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (!whole[t]) rest.push_back(t);
+  GridRule planes_only = grid;
+  planes_only.directions[0].whole_in_head.clear();
+  planes_only.directions[0].whole_in_tail.clear();
+  GridCut cut = cut_along_grid(submesh(mesh, rest), planes_only, eps);
+  for (char side : {char{1}, char{2}}) {
+    std::vector<std::size_t> triangles;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if (whole[t] == side) triangles.push_back(t);
+    const TriangleMesh parts = submesh(mesh, triangles);
+    const bool materials = cut.mesh.has_materials() && parts.has_materials();
+    const auto offset = static_cast<std::uint32_t>(cut.mesh.positions.size());
+    cut.mesh.positions.insert(cut.mesh.positions.end(), parts.positions.begin(), parts.positions.end());
+    for (std::size_t t = 0; t < parts.triangles.size(); ++t) {
+      const Triangle& tri = parts.triangles[t];
+      cut.mesh.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+      if (materials) cut.mesh.materials.push_back(parts.materials[t]);
+      cut.slabs.push_back({side == 1 ? std::size_t{0} : static_cast<std::size_t>(direction.count) + 1});
+    }
+  }
+  return cut;
+}
+
+}  // namespace
 
 std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
   const GridCut grid_cut = cut_along_grid(mesh, grid, eps);

@@ -40,6 +40,13 @@ struct GridDirection {
   int head_units = 0;
   int tail_units = 0;
   std::size_t symmetry = 0;         ///< index of the generator in SymmetryResult::symmetries
+  /// Separate parts kept whole instead of cut (grammar/whole_parts.h), as triangles of the
+  /// cleaned model: placed once with the head, or moved with the tail. Empty when the planes
+  /// cut the whole model; only analysis fills them (the grid's pieces carry the parts).
+  std::vector<std::uint32_t> whole_in_head{}, whole_in_tail{};
+  /// With parts kept whole: fewest units at which no part moved with the tail meets one placed
+  /// with the head, or reaches past the head's last plane.
+  int fewest_units_for_whole_parts = 0;
 };
 
 /// Units of the exemplar a direction's head and tail keep: its count with no copy of the unit.
@@ -75,8 +82,11 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
 /// commute); directions that are sums of chosen ones are dropped. The direction with the most
 /// units needs GridOptions::min_repeats of them; the others may have one (see min_repeats). Each screw axis gives a
-/// further 1-grid. Rotations (no slide) give none. `progress` hears stage "grid rules" with the
-/// fraction of repetition families examined.
+/// further 1-grid. Rotations (no slide) give none. When no translation gives a direction, the
+/// translation with the most units whose planes cut all but some separate parts kept whole
+/// (grammar/whole_parts.h) gives a 1-grid, if one of its units holds a whole part that no plane
+/// cuts (a row of parts, not only walls and rails sliding along themselves). `progress` hears
+/// stage "grid rules" with the fraction of repetition families examined.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options = {}, const ProgressCallback& progress = {});
 

@@ -3,6 +3,8 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "geometry/submesh.h"
+#include "geometry/topology.h"
 #include "grammar/seam_curve.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/docking_site_picture.h"
@@ -20,9 +22,9 @@ namespace {
 
 // What analyze does not build yet (one sentence, for the summary, the JSON and the report).
 std::string missing_text() {
-  return fmt::format("grids of pure rotations (no slide along the axis) are not built; grid planes cross the whole model, "
-                     "so a repetition that parts not repeating with it lie across (the figures on one rod of a table "
-                     "football, among the other rods' figures) gives no grid; docking sites that slide along "
+  return fmt::format("grids of pure rotations (no slide along the axis) are not built; grid planes cross the whole model "
+                     "but for separate parts kept whole, so a repetition that connected geometry not repeating with it "
+                     "lies across gives no grid; docking sites that slide along "
                      "themselves, or whose docker cut at one location lies more than {:g} eps from the seam at the other, "
                      "give no context-free production",
                      kSeamFitFraction);
@@ -70,6 +72,26 @@ std::string kept_units_text(const GridDirection& d) {
   if (d.head_units > 0) kept = units(d.head_units) + " kept once in the head";
   if (d.tail_units > 0) kept += kept.empty() ? units(d.tail_units) + " kept once in the tail" : fmt::format(" and {} in the tail", d.tail_units);
   return fmt::format(" ({}: {} a little from the repeated unit)", kept, min_units(d) == 1 ? "it differs" : "they differ");
+}
+
+// The separate parts a direction keeps whole, e.g. "4 separate parts kept whole (2 placed with the
+// head, 2 moved with the tail)"; empty when it keeps none.
+std::string whole_parts_text(const GridDirection& d, const TriangleMesh& mesh) {
+  if (d.whole_in_head.empty() && d.whole_in_tail.empty()) return "";
+  auto parts = [&](const std::vector<std::uint32_t>& triangles) {
+    std::size_t count = 0;
+    triangle_components(submesh(mesh, std::vector<std::size_t>(triangles.begin(), triangles.end())), &count);
+    return count;
+  };
+  const std::size_t head = parts(d.whole_in_head), tail = parts(d.whole_in_tail);
+  return fmt::format("{} separate part{} kept whole ({} placed with the head, {} moved with the tail)", head + tail,
+                     head + tail == 1 ? "" : "s", head, tail);
+}
+
+// "; the planes pass by 4 separate parts kept whole (...)" for the summary line, or empty.
+std::string whole_parts_note(const GridDirection& d, const TriangleMesh& mesh) {
+  const std::string parts = whole_parts_text(d, mesh);
+  return parts.empty() ? "" : "; the planes pass by " + parts;
 }
 
 // A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
@@ -241,9 +263,9 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
     for (const GridDirection& d : grid.rule.directions)
-      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}\n",
+      out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}{}\n",
                          grid_motion_text(d), vec(d.direction), d.pitch, d.count, d.count == 1 ? "" : "s", d.cut,
-                         kept_units_text(d));
+                         kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
@@ -343,6 +365,13 @@ void write_analysis_report(const AnalysisReport& report) {
             "but planes across the whole model fit only one unit, because other parts (such as structures on a roof) "
             "lie across the rest. Resizing adds units at that place.\n",
             i + 1);
+    for (const GridDirection& d : grid.rule.directions)
+      if (const std::string parts = whole_parts_text(d, report.prepared.model.mesh); !parts.empty())
+        md += fmt::format(
+            "\nNo plane crosses the whole model between the units: the planes cut the rest and pass by {}, parts "
+            "that do not repeat with the units. Parts placed with the head stay where they are; parts moved with the "
+            "tail keep their place at the end. Counts below {} would bring a part within r of the other side.\n",
+            parts, grid.rule.min_count);
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
     for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
     std::string ranges;
