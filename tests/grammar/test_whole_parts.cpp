@@ -1,6 +1,8 @@
 #include "grammar/whole_parts.h"
 
+#include "geometry/model_io.h"
 #include "grammar/grid_rules.h"
+#include "support/cli_run.h"
 #include "support/corpus.h"
 #include "support/shapes.h"
 #include "synthesis/grid_resize.h"
@@ -8,8 +10,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <optional>
 
 using dg::Vec3;
@@ -70,6 +77,32 @@ TEST_CASE("a row of parts gives a 1-grid that keeps the odd parts in its gaps wh
   const dg::TriangleMesh own = dg::resize_grid(grid, pieces, {row.count}, 1e-4 * prepared.surface.eps());
   CHECK(own.area() == Approx(prepared.model.mesh.area()).epsilon(1e-3));
   check_resized_verifies(prepared, grid, row.count + 2);
+}
+
+TEST_CASE("analyze names the parts a grid keeps whole, and resize refuses counts that bring them within r",
+          "[tools][grid][whole_parts]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-whole-parts-cli");
+  dg::write_mesh(folder / "row.obj", row_with_odd_parts());
+  const dg::test::CliRun analyzed = dg::test::run_cli("analyze " + (folder / "row.obj").string() + " -q --json -o " + folder.string(), folder);
+  REQUIRE(analyzed.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(analyzed.output);
+  REQUIRE(summary["grids"].size() == 1);
+  const nlohmann::json& grid = summary["grids"][0];
+  const nlohmann::json& kept = grid["parts_kept_whole"][0];
+  CHECK(kept["head"].get<int>() + kept["tail"].get<int>() >= 4);  // the 4 bars, perhaps an end block
+  std::ifstream report(folder / "row.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("separate parts kept whole") != std::string::npos);
+  const int lowest = grid["min_counts"][0].get<int>();
+  if (lowest > 0) {
+    const dg::test::CliRun refused = dg::test::run_cli(
+        "resize " + (folder / "row.grammar.json").string() + " --grid grid1=" + std::to_string(lowest - 1) + " -o " +
+            (folder / "short.obj").string(),
+        folder);
+    CHECK(refused.status == 2);
+    CHECK(refused.output.find("outside the allowed range") != std::string::npos);
+  }
+  std::filesystem::remove_all(folder);
 }
 
 TEST_CASE("corpus: the Scopia iron railing gives a 1-grid of two scroll pitches that keeps its bars whole",

@@ -74,16 +74,18 @@ std::string kept_units_text(const GridDirection& d) {
   return fmt::format(" ({}: {} a little from the repeated unit)", kept, min_units(d) == 1 ? "it differs" : "they differ");
 }
 
+// Separate parts (vertex-connected components of `mesh`) among the listed triangles.
+std::size_t parts_among(const std::vector<std::uint32_t>& triangles, const TriangleMesh& mesh) {
+  std::size_t count = 0;
+  if (!triangles.empty()) triangle_components(submesh(mesh, std::vector<std::size_t>(triangles.begin(), triangles.end())), &count);
+  return count;
+}
+
 // The separate parts a direction keeps whole, e.g. "4 separate parts kept whole (2 placed with the
 // head, 2 moved with the tail)"; empty when it keeps none.
 std::string whole_parts_text(const GridDirection& d, const TriangleMesh& mesh) {
   if (d.whole_in_head.empty() && d.whole_in_tail.empty()) return "";
-  auto parts = [&](const std::vector<std::uint32_t>& triangles) {
-    std::size_t count = 0;
-    triangle_components(submesh(mesh, std::vector<std::size_t>(triangles.begin(), triangles.end())), &count);
-    return count;
-  };
-  const std::size_t head = parts(d.whole_in_head), tail = parts(d.whole_in_tail);
+  const std::size_t head = parts_among(d.whole_in_head, mesh), tail = parts_among(d.whole_in_tail, mesh);
   return fmt::format("{} separate part{} kept whole ({} placed with the head, {} moved with the tail)", head + tail,
                      head + tail == 1 ? "" : "s", head, tail);
 }
@@ -296,11 +298,14 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   nlohmann::json grids = nlohmann::json::array();
   for (const GridWithPieces& grid : report.grammar.grids) {
     nlohmann::json counts = nlohmann::json::array(), transforms = nlohmann::json::array(), pieces = nlohmann::json::array();
-    nlohmann::json lowest = nlohmann::json::array();
+    nlohmann::json lowest = nlohmann::json::array(), kept_whole = nlohmann::json::array();
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-      counts.push_back(grid.rule.directions[i].count);
-      transforms.push_back(matrix_json(grid.rule.directions[i].motion));
+      const GridDirection& d = grid.rule.directions[i];
+      counts.push_back(d.count);
+      transforms.push_back(matrix_json(d.motion));
       lowest.push_back(lowest_count(grid.rule, i));
+      kept_whole.push_back({{"head", parts_among(d.whole_in_head, report.prepared.model.mesh)},
+                            {"tail", parts_among(d.whole_in_tail, report.prepared.model.mesh)}});
     }
     for (const GridPiece& p : grid.pieces) pieces.push_back({{"name", piece_name(p.classes)}, {"triangles", p.mesh.triangles.size()}});
     grids.push_back({{"name", grid.rule.name},
@@ -309,6 +314,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
                      {"transforms", transforms},
                      {"count_range", {grid.rule.min_count, grid.rule.max_count}},
                      {"min_counts", lowest},
+                     {"parts_kept_whole", kept_whole},
                      {"pieces", pieces}});
   }
   return {{"model", report.prepared.model.source_path},
