@@ -116,4 +116,30 @@ VertexTriangles vertex_triangles(const TriangleMesh& mesh) {
   return around;
 }
 
+EdgeUsers edge_users(const TriangleMesh& mesh) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;  // edge key, corner 3t + k
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto [lo, hi] = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
+      uses.push_back({(static_cast<std::uint64_t>(lo) << 32) | hi, static_cast<std::uint32_t>(3 * t + k)});
+    }
+  std::sort(uses.begin(), uses.end());
+  EdgeUsers users;
+  users.corners.resize(uses.size());
+  users.group_begin.resize(uses.size());
+  users.group_end.resize(uses.size());
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    for (std::size_t u = i; u < j; ++u) {
+      users.corners[u] = uses[u].second;
+      users.group_begin[uses[u].second] = static_cast<std::uint32_t>(i);
+      users.group_end[uses[u].second] = static_cast<std::uint32_t>(j);
+    }
+    i = j;
+  }
+  return users;
+}
+
 }  // namespace dg

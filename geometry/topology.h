@@ -37,4 +37,16 @@ struct VertexTriangles {
 /// The triangles around each vertex of `mesh` (counting sort, O(vertices + triangles)).
 VertexTriangles vertex_triangles(const TriangleMesh& mesh);
 
+/// The triangles around every edge of a mesh, non-manifold edges included (real assets have
+/// fins and back-to-back doubles, whose edges three or more triangles use).
+struct EdgeUsers {
+  /// Triangle corners 3t + k (edge from corner k to k + 1), grouped by edge.
+  std::vector<std::uint32_t> corners;
+  /// Per corner: its edge's group, corners[group_begin[c] .. group_end[c]).
+  std::vector<std::uint32_t> group_begin, group_end;
+};
+
+/// The users of every edge of `mesh` (sorted edge keys, O(T log T)).
+EdgeUsers edge_users(const TriangleMesh& mesh);
+
 }  // namespace dg

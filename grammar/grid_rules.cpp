@@ -137,6 +137,13 @@ void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells,
   direction.tail_units = direction.count - (best_last + 1);
 }
 
+// Whether the model spans `pitches` times the translation t (bounded by its bounding box): every
+// plane crosses the model, so that many units need that much extent along t. A cheap rejection
+// of large powers of short motions.
+bool spans_pitches(const BoundingBox& bounds, const Vec3& t, int pitches) {
+  return t.cwiseAbs().dot(bounds.size()) >= pitches * t.squaredNorm();
+}
+
 // The best chain of cut planes for one translation or screw motion: the longest run of planes,
 // each crossing only r-symmetric cells (the last only images of them; the first also symmetric
 // cells whose nearby asymmetry lies on one side of it) and none holding a face, whose slabs are
@@ -150,9 +157,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   const double pitch = t.norm();
   if (pitch <= 0.0) return std::nullopt;
   const Vec3 d = t / pitch;
-  // Every plane crosses the model, so min_repeats units need that many pitches of extent along d
-  // (bounded by the bounding box): a cheap rejection of large powers of short motions.
-  if (d.cwiseAbs().dot(prepared.cleaning.bounds.size()) < min_repeats * pitch) return std::nullopt;
+  if (!spans_pitches(prepared.cleaning.bounds, t, min_repeats)) return std::nullopt;
   const double half = 0.5 * surface.eps() * (std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()));
 
   std::vector<char> in_r(surface.cell_count(), 0), in_xi(surface.cell_count(), 0);
@@ -392,15 +397,16 @@ bool boxes_meet(const BoundingBox& a, const Vec3& shift, const BoundingBox& b, d
 // Places the groups of parts kept whole along `direction` (found on the rest of the model): a
 // group whose centre lies before the middle of the units goes with the head, else with the tail.
 // Fails when no unit holds a part (not kept whole) that lies inside it, or a group reaches across
-// all units. Sets the fewest units at which the groups moved with the tail stay more than r from
+// all units. Returns the fewest units at which the groups moved with the tail stay more than r from
 // those placed with the head and out of the head's slab, and the head's groups out of the tail's.
-bool place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const WholeParts& whole, double r) {
+std::optional<int> place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const ModelParts& model,
+                                     const WholeParts& whole, double r) {
   const Vec3& d = direction.direction;
   const double first = direction.cut, last = direction.cut + direction.count * direction.pitch;
   std::map<std::uint32_t, Extent> groups;
   std::vector<Extent> parts(whole.kept.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::uint32_t p = whole.part[t];
+    const std::uint32_t p = model.part[t];
     Extent& e = whole.kept[p] ? groups[whole.group[p]] : parts[p];
     const auto corners = mesh.corners(t);
     for (const Vec3& x : corners) {
@@ -417,7 +423,7 @@ bool place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const
     if (e.area <= 0.0 || e.lo <= first + margin || e.hi >= last - margin) return false;
     return std::floor((e.lo - first) / direction.pitch) == std::floor((e.hi - first) / direction.pitch);
   });
-  if (!unit_holds_a_part) return false;
+  if (!unit_holds_a_part) return std::nullopt;
   const double middle = 0.5 * (first + last);
   std::vector<const Extent*> head, tail;
   std::map<std::uint32_t, bool> in_head;
@@ -427,11 +433,11 @@ bool place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const
   }
   int fewest = 0;
   for (const Extent* e : head) {
-    if (e->hi + r > last) return false;
+    if (e->hi + r > last) return std::nullopt;
     fewest = std::max(fewest, static_cast<int>(std::ceil((e->hi + r - first) / direction.pitch)));
   }
   for (const Extent* e : tail) {
-    if (e->lo - r < first) return false;
+    if (e->lo - r < first) return std::nullopt;
     fewest = std::max(fewest, direction.count - static_cast<int>(std::floor((e->lo - r - first) / direction.pitch)));
   }
   // Between those bounds a tail group moved back may still come near a head group.
@@ -446,36 +452,43 @@ bool place_whole_parts(GridDirection& direction, const TriangleMesh& mesh, const
     }
   }
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::uint32_t p = whole.part[t];
+    const std::uint32_t p = model.part[t];
     if (whole.kept[p]) (in_head[whole.group[p]] ? direction.whole_in_head : direction.whole_in_tail).push_back(static_cast<std::uint32_t>(t));
   }
-  direction.fewest_units_for_whole_parts = fewest;
-  return true;
+  return fewest;
 }
 
 // Members of a family tried for a row of parts: the generator and its square (each builds the
 // voxel surface of the rest of the model and tests its every cell).
 constexpr std::size_t kRowMembersTried = 2;
 
+// A direction whose planes cut the model but for parts kept whole, and the fewest units it allows.
+struct RowOfParts {
+  GridDirection direction;
+  int fewest_units = 0;
+};
+
 // The translation with the most units whose planes cut the model but for parts kept whole (for
 // each family, the first member by power that gives one).
-std::optional<GridDirection> row_of_parts(const PreparedModel& prepared, const SymmetryResult& symmetries,
-                                          const GridOptions& options) {
-  std::optional<GridDirection> best;
+std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                       const GridOptions& options) {
+  const ModelParts parts = model_parts(prepared.model.mesh);
+  std::optional<RowOfParts> best;
   for (const SymmetryFamily& family : symmetries.families) {
     if (family.kind != "translation" || family.count == 0) continue;  // count 0: it only slides walls and rails
     const std::vector<std::size_t> by_power = members_by_power(family);
     for (std::size_t i = 0; i < std::min(by_power.size(), kRowMembersTried); ++i) {
       const std::size_t member = family.members[by_power[i]];
       const DetectedSymmetry& symmetry = symmetries.symmetries[member];
-      const Vec3& t = symmetry.transform.translation;
-      if (t.normalized().cwiseAbs().dot(prepared.cleaning.bounds.size()) < options.min_repeats * t.norm()) continue;
-      const WholeParts whole = whole_parts(prepared, symmetry);
+      if (!spans_pitches(prepared.cleaning.bounds, symmetry.transform.translation, options.min_repeats)) continue;
+      const WholeParts whole = whole_parts(prepared, parts, symmetry);
       if (whole.empty()) continue;
       std::optional<GridDirection> direction =
           grid_direction(whole.rest, whole.motion, member, options.min_repeats, options.max_slab_asymmetry);
-      if (!direction || !place_whole_parts(*direction, prepared.model.mesh, whole, prepared.surface.r())) continue;
-      if (!best || direction->count > best->count) best = std::move(direction);
+      if (!direction) continue;
+      const std::optional<int> fewest = place_whole_parts(*direction, prepared.model.mesh, parts, whole, prepared.surface.r());
+      if (!fewest) continue;
+      if (!best || direction->count > best->direction.count) best = RowOfParts{std::move(*direction), *fewest};
       break;
     }
   }
@@ -554,9 +567,9 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   }
   // No translation cuts across the whole model: a row of parts may, keeping other parts whole.
   if (grid.directions.empty())
-    if (std::optional<GridDirection> row = row_of_parts(prepared, symmetries, options)) {
-      grid.min_count = row->fewest_units_for_whole_parts;
-      grid.directions.push_back(std::move(*row));
+    if (std::optional<RowOfParts> row = row_of_parts(prepared, symmetries, options)) {
+      grid.min_count = row->fewest_units;
+      grid.directions.push_back(std::move(row->direction));
     }
   if (!grid.directions.empty()) grids.push_back(std::move(grid));
   // A screw commutes only with motions along its own axis, so each screw is a 1-grid of its own;
@@ -574,12 +587,9 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
 }
 
 namespace {
-GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, double eps);
-}  // namespace
 
-GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
-  if (grid.directions.size() == 1 && !(grid.directions[0].whole_in_head.empty() && grid.directions[0].whole_in_tail.empty()))
-    return cut_around_whole_parts(mesh, grid, eps);
+// cut_along_grid of every triangle of `mesh` (no part kept whole).
+GridCut cut_across_whole_model(const TriangleMesh& mesh, const GridRule& grid, double eps) {
   TriangleMesh cut;
   // Back-to-back double faces are cut as one sheet and doubled again at the end, so both sides
   // stay exact duplicates (and their edges manifold for the merge below).
@@ -626,8 +636,6 @@ GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double ep
   return result;
 }
 
-namespace {
-
 // cut_along_grid for a 1-grid that keeps parts whole: the rest cut along the planes, the parts
 // appended uncut in the head's slab 0 or the tail's slab count + 1.
 GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, double eps) {
@@ -638,10 +646,7 @@ GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, d
   std::vector<std::size_t> rest;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (!whole[t]) rest.push_back(t);
-  GridRule planes_only = grid;
-  planes_only.directions[0].whole_in_head.clear();
-  planes_only.directions[0].whole_in_tail.clear();
-  GridCut cut = cut_along_grid(submesh(mesh, rest), planes_only, eps);
+  GridCut cut = cut_across_whole_model(submesh(mesh, rest), grid, eps);
   for (char side : {char{1}, char{2}}) {
     std::vector<std::size_t> triangles;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
@@ -661,6 +666,12 @@ GridCut cut_around_whole_parts(const TriangleMesh& mesh, const GridRule& grid, d
 }
 
 }  // namespace
+
+GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps) {
+  const bool keeps_parts = grid.directions.size() == 1 &&
+                           !(grid.directions[0].whole_in_head.empty() && grid.directions[0].whole_in_tail.empty());
+  return keeps_parts ? cut_around_whole_parts(mesh, grid, eps) : cut_across_whole_model(mesh, grid, eps);
+}
 
 std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps) {
   const GridCut grid_cut = cut_along_grid(mesh, grid, eps);

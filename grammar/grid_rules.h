@@ -44,9 +44,6 @@ struct GridDirection {
   /// cleaned model: placed once with the head, or moved with the tail. Empty when the planes
   /// cut the whole model; only analysis fills them (the grid's pieces carry the parts).
   std::vector<std::uint32_t> whole_in_head{}, whole_in_tail{};
-  /// With parts kept whole: fewest units at which no part moved with the tail meets one placed
-  /// with the head, or reaches past the head's last plane.
-  int fewest_units_for_whole_parts = 0;
 };
 
 /// Units of the exemplar a direction's head and tail keep: its count with no copy of the unit.

@@ -3,6 +3,7 @@
 // piece cut at one location fits the hole left at another).
 
 #include "geometry/mesh.h"
+#include "geometry/topology.h"
 
 #include <array>
 #include <cstdint>
@@ -24,18 +25,6 @@ inline constexpr double kSeamFitFraction = 1e-2;
 
 /// Smallest weld distance (fraction of eps) for the seams of derived pieces: float32 rounding.
 inline constexpr double kSeamWeldFloorFraction = 1e-4;
-
-/// The triangles around every edge of a mesh, non-manifold edges included (real assets have
-/// fins and back-to-back doubles, whose edges three or more triangles use).
-struct EdgeUsers {
-  /// Triangle corners 3t + k (edge from corner k to k + 1), grouped by edge.
-  std::vector<std::uint32_t> corners;
-  /// Per corner: its edge's group, corners[group_begin[c] .. group_end[c]).
-  std::vector<std::uint32_t> group_begin, group_end;
-};
-
-/// The users of every edge of `mesh`.
-EdgeUsers edge_users(const TriangleMesh& mesh);
 
 /// Edges between a flagged triangle (`inside`, one flag per triangle) and an unflagged one
 /// (any of them, at an edge that more than two triangles use): the curve along which the flagged

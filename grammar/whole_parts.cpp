@@ -136,23 +136,29 @@ SymmetricRegion tested_region(const VoxelSurface& surface, const RigidTransform&
 
 }  // namespace
 
+ModelParts model_parts(const TriangleMesh& mesh) {
+  ModelParts parts;
+  std::size_t count = 0;
+  parts.part = triangle_components(mesh, &count);
+  parts.area.assign(count, 0.0);
+  parts.box.resize(count);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    parts.area[parts.part[t]] += 0.5 * mesh.area_vector(t).norm();
+    for (const Vec3& p : mesh.corners(t)) parts.box[parts.part[t]].add(p);
+  }
+  return parts;
+}
+
 bool WholeParts::empty() const { return std::find(kept.begin(), kept.end(), 1) == kept.end(); }
 
-WholeParts whole_parts(const PreparedModel& prepared, const DetectedSymmetry& symmetry) {
+WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, const DetectedSymmetry& symmetry) {
   const TriangleMesh& mesh = prepared.model.mesh;
   const VoxelSurface& surface = prepared.surface;
+  const std::vector<std::uint32_t>& part_of = model.part;
+  const std::size_t parts = model.area.size();
   WholeParts whole;
-  std::size_t parts = 0;
-  whole.part = triangle_components(mesh, &parts);
   whole.kept.assign(parts, 0);
-  std::vector<double> area(parts, 0.0);
-  std::vector<BoundingBox> box_of(parts);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    area[whole.part[t]] += 0.5 * mesh.area_vector(t).norm();
-    for (const Vec3& p : mesh.corners(t)) box_of[whole.part[t]].add(p);
-  }
-  if (prepared.model.is_point_cloud() || !has_moved_copy(area, box_of, symmetry.transform.translation, surface.eps()))
-    return whole;
+  if (!has_moved_copy(model.area, model.box, symmetry.transform.translation, surface.eps())) return whole;
 
   // Candidates: small parts with a cell of their own that is not symmetric.
   const double largest = kWholePartShare * mesh.area();
@@ -163,9 +169,9 @@ WholeParts whole_parts(const PreparedModel& prepared, const DetectedSymmetry& sy
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
     const auto triangles = surface.triangles(c);
     if (triangles.empty() || known_symmetric[c]) continue;
-    const std::uint32_t p = whole.part[triangles.front()];
-    if (whole.kept[p] || area[p] > largest) continue;
-    if (std::all_of(triangles.begin(), triangles.end(), [&](std::uint32_t t) { return whole.part[t] == p; }) &&
+    const std::uint32_t p = part_of[triangles.front()];
+    if (whole.kept[p] || model.area[p] > largest) continue;
+    if (std::all_of(triangles.begin(), triangles.end(), [&](std::uint32_t t) { return part_of[t] == p; }) &&
         !matcher.symmetric(c, symmetry.transform, inverse))
       whole.kept[p] = 1;
   }
@@ -181,10 +187,10 @@ WholeParts whole_parts(const PreparedModel& prepared, const DetectedSymmetry& sy
   std::vector<VoxelCoord> voxels;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
     for (std::uint32_t t : surface.triangles(c))
-      if (whole.kept[whole.part[t]]) {
-        const auto [at, added] = part_in.emplace(c, whole.part[t]);
+      if (whole.kept[part_of[t]]) {
+        const auto [at, added] = part_in.emplace(c, part_of[t]);
         if (added) voxels.push_back(surface.coord(c));
-        parent[root(parent, whole.part[t])] = root(parent, at->second);
+        parent[root(parent, part_of[t])] = root(parent, at->second);
       }
   VoxelBlocks(voxels, reach).neighbouring_blocks([&](const VoxelCoord& a, const VoxelCoord& b) {
     const auto cell = [&](const VoxelCoord& v) { return static_cast<std::uint32_t>(surface.find(v)); };
@@ -195,7 +201,7 @@ WholeParts whole_parts(const PreparedModel& prepared, const DetectedSymmetry& sy
 
   // The rest, with the motion's symmetric region on it.
   std::vector<char> removed(mesh.triangles.size(), 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) removed[t] = whole.kept[whole.part[t]];
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) removed[t] = whole.kept[part_of[t]];
   whole.rest = without_triangles(prepared, removed);
   whole.motion = symmetry;
   whole.motion.region = tested_region(whole.rest.surface, symmetry.transform);

@@ -16,9 +16,18 @@
 
 namespace dg {
 
+/// The separate parts of a mesh: its vertex-connected components.
+struct ModelParts {
+  std::vector<std::uint32_t> part;  ///< per triangle: its part
+  std::vector<double> area;         ///< per part, model units^2
+  std::vector<BoundingBox> box;     ///< per part
+};
+
+/// The parts of `mesh` with their areas and bounding boxes.
+ModelParts model_parts(const TriangleMesh& mesh);
+
 struct WholeParts {
-  std::vector<std::uint32_t> part;   ///< per triangle of the model: its part (vertex-connected component)
-  std::vector<char> kept;            ///< per part: kept whole
+  std::vector<char> kept;            ///< per part (ModelParts): kept whole
   std::vector<std::uint32_t> group;  ///< per part kept whole: the parts it moves with share the number
   /// The model without the parts kept whole (mesh, feature edges, voxel surface on the same grid,
   /// the whole model's bounds), and the motion with its symmetric region on that rest.
@@ -36,6 +45,7 @@ inline constexpr double kWholePartShare = 0.05;
 /// cell holding only their triangles is not symmetric), with the rest of the model and the
 /// motion's symmetric region on it (every cell of the rest tested). Empty when no part has a copy
 /// moved by the translation (there is no row of parts) or none can be kept whole.
-WholeParts whole_parts(const PreparedModel& prepared, const DetectedSymmetry& symmetry);
+/// `parts` are the model_parts of the prepared mesh.
+WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& parts, const DetectedSymmetry& symmetry);
 
 }  // namespace dg
