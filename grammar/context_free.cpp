@@ -49,25 +49,23 @@ std::vector<char> reachable_nonterminals(const ContextFreeGrammar& grammar, std:
   return reached;
 }
 
-// Drops the non-terminals that no derivation reaches from the axiom, with their productions,
-// renumbers the others densely and names them N1, N2, ... in their order. Returns how many went.
-std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
-  std::vector<std::size_t> starts;
-  for (const ChildSlot& slot : grammar.axiom.children) starts.push_back(slot.nonterminal);
-  const std::vector<char> reached = reachable_nonterminals(grammar, starts);
+// Keeps the non-terminals and productions flagged in `keep_nonterminal` and `keep_production`
+// (a production of a dropped non-terminal goes too), renumbered densely in their order and the
+// non-terminals named N1, N2, ... Kept productions must name kept non-terminals and kept
+// productions only.
+void keep_rules(ContextFreeGrammar& grammar, const std::vector<char>& keep_nonterminal, const std::vector<char>& keep_production) {
   std::vector<std::size_t> new_nonterminal(grammar.nonterminals.size(), kNone);
   std::vector<ShapeNonterminal> nonterminals;
   for (std::size_t n = 0; n < grammar.nonterminals.size(); ++n) {
-    if (!reached[n]) continue;
+    if (!keep_nonterminal[n]) continue;
     new_nonterminal[n] = nonterminals.size();
     nonterminals.push_back(grammar.nonterminals[n]);
     nonterminals.back().name = fmt::format("N{}", nonterminals.size());
   }
-  const std::size_t dropped = grammar.nonterminals.size() - nonterminals.size();
   std::vector<std::size_t> new_production(grammar.productions.size(), kNoProduction);
   std::vector<ShapeProduction> productions;
   for (std::size_t p = 0; p < grammar.productions.size(); ++p) {
-    if (!reached[grammar.productions[p].lhs]) continue;
+    if (!keep_production[p] || !keep_nonterminal[grammar.productions[p].lhs]) continue;
     new_production[p] = productions.size();
     productions.push_back(std::move(grammar.productions[p]));
   }
@@ -82,7 +80,35 @@ std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
   renumber(grammar.axiom);
   grammar.nonterminals = std::move(nonterminals);
   grammar.productions = std::move(productions);
-  return dropped;
+}
+
+// Drops the non-terminals that no derivation reaches from the axiom, with their productions,
+// and renumbers the rest (keep_rules). Returns how many went.
+std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
+  std::vector<std::size_t> starts;
+  for (const ChildSlot& slot : grammar.axiom.children) starts.push_back(slot.nonterminal);
+  const std::vector<char> reached = reachable_nonterminals(grammar, starts);
+  keep_rules(grammar, reached, std::vector<char>(grammar.productions.size(), 1));
+  return static_cast<std::size_t>(std::count(reached.begin(), reached.end(), 0));
+}
+
+// Drops the productions of the flagged non-terminals that hold no child slot and rebuild no
+// slot of the exemplar (no slot names them as its original production), and renumbers the rest
+// (keep_rules). Returns how many went.
+std::size_t drop_childless_alternatives(ContextFreeGrammar& grammar, const std::vector<char>& flagged_nonterminals) {
+  std::vector<char> named(grammar.productions.size(), 0);
+  auto mark = [&](const ShapeProduction& p) {
+    for (const ChildSlot& slot : p.children) named[slot.original_production] = 1;
+  };
+  for (const ShapeProduction& p : grammar.productions) mark(p);
+  mark(grammar.axiom);
+  std::vector<char> keep(grammar.productions.size(), 1);
+  for (std::size_t p = 0; p < grammar.productions.size(); ++p) {
+    const ShapeProduction& production = grammar.productions[p];
+    if (flagged_nonterminals[production.lhs] && production.children.empty() && !named[p]) keep[p] = 0;
+  }
+  keep_rules(grammar, std::vector<char>(grammar.nonterminals.size(), 1), keep);
+  return static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
 }
 
 double jaccard(const Cells& a, const Cells& b) {
@@ -719,7 +745,54 @@ class Builder {
       grammar = {};
       stats.axiom_with_holes = true;
     }
+    if (!grammar.empty())
+      stats.productions_moving_the_model =
+          drop_childless_alternatives(grammar, nonterminals_whose_swaps_move_the_model(grammar.nonterminals.size()));
     stats.unreachable_nonterminals = drop_unreachable_nonterminals(grammar);
+  }
+
+  // Whether `motion` carries the rest of the model outside `from`'s docker and band onto the
+  // surface outside `to`'s docker (up to 1 % of its cells, tested on at most about 5,000 of them).
+  bool rest_maps_onto(const Node& from, const Node& to, const RigidTransform& motion) const {
+    std::vector<char> skip(surface_.cell_count(), 0), in_docker(surface_.cell_count(), 0);
+    for (const Cells* cells : {&from.site, &from.docker})
+      for (std::uint32_t c : *cells) skip[c] = 1;
+    for (std::uint32_t c : to.docker) in_docker[c] = 1;
+    const std::size_t rest = surface_.cell_count() - static_cast<std::size_t>(std::count(skip.begin(), skip.end(), 1));
+    const std::size_t stride = std::max<std::size_t>(1, rest / 5000);
+    std::size_t tested = 0, missed = 0, seen = 0;
+    for (std::uint32_t c = 0; c < surface_.cell_count(); ++c) {
+      if (skip[c] || seen++ % stride != 0) continue;
+      ++tested;
+      const std::int64_t hit = nearest_cell(surface_, motion.apply(surface_.centre(c)));
+      if (hit < 0 || in_docker[static_cast<std::uint32_t>(hit)]) ++missed;
+      if (missed * 100 > rest / stride + 1) return false;
+    }
+    return missed * 100 <= tested;
+  }
+
+  // Per non-terminal: whether its kept locations, two or more, each have the rest of the model
+  // (outside docker and band) where the motion from the first location carries the first's rest,
+  // both ways. Then a docker cut at one location and put at another rebuilds the whole exemplar
+  // moved by that motion: no variation (a gear's tooth-wide strip that a translation repeats).
+  std::vector<char> nonterminals_whose_swaps_move_the_model(std::size_t nonterminal_count) const {
+    std::vector<char> flagged(nonterminal_count, 0);
+    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      if (class_index_[k] == kNone) continue;
+      std::vector<std::size_t> kept;
+      for (std::size_t i : class_nodes_[k])
+        if (nodes_[i].kept) kept.push_back(i);
+      if (kept.size() < 2) continue;
+      const Node& first = nodes_[kept.front()];
+      bool moves = true;
+      for (std::size_t i = 1; i < kept.size() && moves; ++i) {
+        const Node& other = nodes_[kept[i]];
+        const RigidTransform motion = other.frame.after(first.frame_inverse);
+        moves = rest_maps_onto(first, other, motion) && rest_maps_onto(other, first, motion.inverse());
+      }
+      flagged[class_index_[k]] = moves ? 1 : 0;
+    }
+    return flagged;
   }
 
   // Whether `p`'s terminal holds a triangle that cleaning drops while the exemplar is closed: it

@@ -93,6 +93,9 @@ struct ContextFreeStats {
   /// it would open a hole), and whether the axiom did too (then the grammar is left empty).
   std::size_t productions_with_holes = 0;
   bool axiom_with_holes = false;
+  /// Productions dropped because putting them at another location of their non-terminal only
+  /// moves the whole exemplar (every location has the same rest of the model around it, moved).
+  std::size_t productions_moving_the_model = 0;
   /// Non-terminals dropped because no derivation reaches them from the axiom (their locations
   /// lie in alternatives that the axiom's independent set of sites left out).
   std::size_t unreachable_nonterminals = 0;

@@ -54,7 +54,13 @@ RTCScene make_scene(RTCDevice device, const TriangleMesh& mesh) {
   return scene;
 }
 
-// Point where segment a-b crosses triangle (p, q, r), if it does (Moller-Trumbore).
+// Slack of the crossing test in barycentric and segment parameters: pieces that only touch (an
+// edge ending on a face, edges meeting) cross within rounding, and verify counts touching as
+// intersecting.
+constexpr double kTouchSlack = 1e-9;
+
+// Point where segment a-b crosses or touches triangle (p, q, r), if it does (Moller-Trumbore,
+// parameters within kTouchSlack of the closed ranges).
 bool segment_hits_triangle(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q, const Vec3& r, Vec3& hit) {
   const Vec3 d = b - a, e1 = q - p, e2 = r - p;
   const Vec3 h = d.cross(e2);
@@ -64,12 +70,12 @@ bool segment_hits_triangle(const Vec3& a, const Vec3& b, const Vec3& p, const Ve
   const double inv = 1.0 / det;
   const Vec3 s = a - p;
   const double u = inv * s.dot(h);
-  if (u < 0.0 || u > 1.0) return false;
+  if (u < -kTouchSlack || u > 1.0 + kTouchSlack) return false;
   const Vec3 qv = s.cross(e1);
   const double v = inv * d.dot(qv);
-  if (v < 0.0 || u + v > 1.0) return false;
+  if (v < -kTouchSlack || u + v > 1.0 + kTouchSlack) return false;
   const double t = inv * e2.dot(qv);
-  if (t < 0.0 || t > 1.0) return false;
+  if (t < -kTouchSlack || t > 1.0 + kTouchSlack) return false;
   hit = a + t * d;
   return true;
 }

@@ -26,8 +26,9 @@ class PieceCollisions {
   PieceCollisions(const PieceCollisions&) = delete;
   PieceCollisions& operator=(const PieceCollisions&) = delete;
 
-  /// True when `piece` (model coordinates) crosses a piece added before at a point that
-  /// `at_seam` does not accept as contact. Coplanar overlaps are not detected.
+  /// True when `piece` (model coordinates) crosses or touches a piece added before at a point
+  /// that `at_seam` does not accept as contact (touching within 1e-9 of the triangles' and
+  /// edges' parameter ranges). Coplanar overlaps are not detected.
   bool collides(const TriangleMesh& piece, const SeamContact& at_seam) const;
 
   /// Adds a placed piece to the set later pieces are checked against.

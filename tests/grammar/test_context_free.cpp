@@ -486,6 +486,23 @@ TEST_CASE("corpus: an image that cuts off only voxel slivers gives no docking si
   for (const dg::DockingSite& s : a->sites.sites) CHECK(s.secondary_docker_area >= eps * eps);
 }
 
+TEST_CASE("corpus: alternatives that only move the whole model are dropped (Sweet Home 3D corner sofa)",
+          "[grammar][context_free][corpus]") {
+  // The sofa's non-terminal had two productions: the docker of one site (most of the sofa) and
+  // that of another, whose rest of the model is the first's turned by 90 degrees. Every variant
+  // was the exemplar turned by 90 degrees (measured on its bounding box), which generate called
+  // a change. Such an alternative is dropped, and generate says there is nothing to vary.
+  const std::optional<Analysed> a = analyse_corpus("meshes/furn-sh3d-corner-sofa/cornerSofa.obj");
+  if (!a) return;
+  REQUIRE_FALSE(a->grammar.empty());
+  CHECK(a->stats.productions_moving_the_model >= 1);
+  CHECK_FALSE(dg::derivation_has_choice(a->grammar, {}));
+  dg::ShapeDerivationOptions options;
+  options.exemplar_only = true;
+  const dg::ShapeDerivation rebuilt = dg::derive_shape(a->grammar, a->prepared.surface.eps(), options);
+  CHECK(dg::test::hausdorff_distance(rebuilt.mesh, a->prepared.model.mesh) < a->prepared.surface.eps());
+}
+
 TEST_CASE("grid rules, docking sites and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
   dg::Model model;
   model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;

@@ -51,6 +51,13 @@ std::string unreachable_text(const ContextFreeStats& stats) {
                      stats.unreachable_nonterminals);
 }
 
+// "N production(s) were dropped because ..." for alternatives that would only move the model.
+std::string moving_text(const ContextFreeStats& stats) {
+  return fmt::format("{} production(s) were dropped because putting one at another site of its non-terminal only moves "
+                     "the whole model (the rest of the model around each of those sites is the same, moved)",
+                     stats.productions_moving_the_model);
+}
+
 // "; 12 production(s) were dropped because ..." when context-free rules were dropped for
 // opening holes in a closed model or for being unreachable from the axiom; empty otherwise.
 std::string dropped_rules_text(const ContextFreeStats& stats) {
@@ -59,6 +66,7 @@ std::string dropped_rules_text(const ContextFreeStats& stats) {
     text += fmt::format("; {} production(s){} were dropped because their pieces hold triangles that cleaning drops (they "
                         "would open holes in the closed model)",
                         stats.productions_with_holes, stats.axiom_with_holes ? " and the axiom" : "");
+  if (stats.productions_moving_the_model > 0) text += "; " + moving_text(stats);
   if (stats.unreachable_nonterminals > 0) text += "; " + unreachable_text(stats);
   return text;
 }
@@ -175,7 +183,10 @@ std::string generate_rules_text(const AnalysisReport& report) {
   if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
   if (!derivation_has_choice(report.grammar.context_free, ShapeDerivationOptions{}))
     return std::string("no non-terminal has a second production of another shape (its locations are copies of one "
-                       "another), so they only rebuild the exemplar") +
+                       "another") +
+           (report.context_free.productions_moving_the_model > 0 ? ", or the other shapes would only move the whole model"
+                                                                 : "") +
+           "), so they only rebuild the exemplar" +
            (report.grammar.grids.empty() ? ": generate has nothing to vary" : ": generate varies the grid");
   if (report.grammar.grids.empty())
     return "none changes the model while keeping its pieces upright: generate --orientation free uses them";
@@ -211,6 +222,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
                     "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
                     kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
+  if (report.context_free.productions_moving_the_model > 0) md += "\n" + moving_text(report.context_free) + ".\n";
   if (report.context_free.unreachable_nonterminals > 0) md += "\n" + unreachable_text(report.context_free) + ".\n";
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
