@@ -9,10 +9,7 @@ namespace dg {
 
 /// True when `a` and `b` are equal up to `tolerance` (model units): the same left side, the
 /// same child slots (non-terminal, exemplar production, placement within tolerance) and
-/// terminals of the same shape however they are triangulated: the same area of each material
-/// (within tolerance^2), bounding boxes within tolerance, and surfaces that cover each other on
-/// cells of tolerance / 2 (every cell one surface passes through touches one the other passes
-/// through, so they lie within about 1.7 tolerance of each other).
+/// terminals of the same surface however they are triangulated (same_surface).
 bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance);
 
 }  // namespace dg

@@ -1,6 +1,7 @@
 #include "synthesis/variants.h"
 
 #include "geometry/errors.h"
+#include "geometry/same_surface.h"
 #include "grammar/random.h"
 #include "synthesis/grid_resize.h"
 
@@ -49,12 +50,20 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   Random random(plan.seed);
   for (const GridWithPieces& grid : grammar.grids) {
-    std::vector<int> counts;
-    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-      const GridDirection& d = grid.rule.directions[i];
-      const int lo = std::max({1, lowest_count(grid.rule, i), static_cast<int>(std::ceil(d.count / options.range_factor))});
-      const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
-      counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
+    // Counts equal to the exemplar's in every direction rebuild the exemplar: drawn again (up to
+    // 8 times, from the same stream) when the ranges allow other counts.
+    std::vector<int> counts, exemplar_counts;
+    bool other_counts = false;
+    for (const GridDirection& d : grid.rule.directions) exemplar_counts.push_back(d.count);
+    for (int draw = 0; draw <= 8 && (draw == 0 || (other_counts && counts == exemplar_counts)); ++draw) {
+      counts.clear();
+      for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
+        const GridDirection& d = grid.rule.directions[i];
+        const int lo = std::max({1, lowest_count(grid.rule, i), static_cast<int>(std::ceil(d.count / options.range_factor))});
+        const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
+        other_counts = other_counts || lo < hi;
+        counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
+      }
     }
     plan.grid_counts.push_back(std::move(counts));
   }
@@ -65,13 +74,16 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
   Variant variant;
   if (plan.context_free) {
     // A derivation that keeps every slot's own production rebuilds the exemplar, which is no
-    // variant: up to kRedraws further seeds derived from the variant's are tried for a changed
-    // one (when the grammar has a choice at all), so the result still depends only on the plan.
+    // variant, and so does one whose other productions only cut the same surface otherwise (the
+    // exemplar's surface within eps): up to kRedraws further seeds derived from the variant's are
+    // tried for a changed one (when the grammar has a choice at all), so the result still depends
+    // only on the plan.
     constexpr std::uint64_t kRedraws = 8;
     ShapeDerivationOptions derivation = options.derivation;
     for (std::uint64_t draw = 0; draw <= kRedraws; ++draw) {
       derivation.seed = draw == 0 ? plan.seed : variant_seed(plan.seed, draw);
       variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
+      variant.derivation.changed = variant.derivation.changed && !same_surface(variant.derivation.mesh, grammar.exemplar, grammar.eps);
       if (variant.derivation.changed || (draw == 0 && !derivation_has_choice(grammar.context_free, derivation))) break;
     }
     variant.mesh = std::move(variant.derivation.mesh);

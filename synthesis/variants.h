@@ -18,7 +18,8 @@ enum class VariantRules { automatic, grid, context_free };
 struct VariantOptions {
   VariantRules rules = VariantRules::automatic;
   /// Grid variants: counts are drawn uniformly from [ceil(count / range_factor),
-  /// count * range_factor] (at least 1, within the grid's count range), count = the exemplar's.
+  /// count * range_factor] (at least 1, within the grid's count range), count = the exemplar's;
+  /// a draw of the exemplar's counts in every direction is drawn again (up to 8 times).
   double range_factor = 2.0;
   /// Context-free variants: retries, limits (the seed is set per variant).
   ShapeDerivationOptions derivation;
@@ -44,8 +45,10 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 
 /// Builds the mesh of a planned variant. A context-free derivation that happens to keep every
-/// slot's exemplar production is drawn again (up to 8 times, with seeds derived from the plan's),
-/// so variants differ from the exemplar whenever the grammar offers a choice.
+/// slot's exemplar production, or whose other productions give the exemplar's surface again
+/// (within eps, see same_surface: another decomposition of the same parts), is drawn again (up
+/// to 8 times, with seeds derived from the plan's), so variants differ from the exemplar whenever
+/// the grammar offers a choice; `derivation.changed` says whether the result does.
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -10,20 +10,6 @@ using dg::Vec3;
 
 namespace {
 
-// `mesh` with every triangle split at its centroid into three: the same surface.
-dg::TriangleMesh split_at_centroids(const dg::TriangleMesh& mesh) {
-  dg::TriangleMesh split = mesh;
-  split.triangles.clear();
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    const auto m = static_cast<std::uint32_t>(split.positions.size());
-    split.positions.push_back((a + b + c) / 3.0);
-    const dg::Triangle& tri = mesh.triangles[t];
-    split.triangles.insert(split.triangles.end(), {{tri[0], tri[1], m}, {tri[1], tri[2], m}, {tri[2], tri[0], m}});
-  }
-  return split;
-}
-
 // The unit square [x, x + 1] x [y, y + 1] in the plane z = 0, as two triangles.
 dg::TriangleMesh square(double x, double y) {
   dg::TriangleMesh mesh;
@@ -47,7 +33,7 @@ TEST_CASE("same production: a terminal triangulated differently is the same, ano
   const dg::ShapeProduction p = leaf(0, box);
   CHECK(dg::same_production(p, p, tolerance));
   // Three times the triangles, the same surface.
-  const dg::ShapeProduction retriangulated = leaf(0, split_at_centroids(box));
+  const dg::ShapeProduction retriangulated = leaf(0, dg::test::split_at_centroids(box));
   REQUIRE(retriangulated.terminal.triangles.size() == 3 * box.triangles.size());
   CHECK(dg::same_production(p, retriangulated, tolerance));
   CHECK(dg::same_production(retriangulated, p, tolerance));
@@ -65,11 +51,27 @@ TEST_CASE("same production: a terminal triangulated differently is the same, ano
   dg::test::append(diagonal, square(2, 1));
   dg::test::append(other_diagonal, square(2, 0));
   CHECK_FALSE(dg::same_production(leaf(0, diagonal), leaf(0, other_diagonal), tolerance));
-  CHECK(dg::same_production(leaf(0, diagonal), leaf(0, split_at_centroids(diagonal)), tolerance));
+  CHECK(dg::same_production(leaf(0, diagonal), leaf(0, dg::test::split_at_centroids(diagonal)), tolerance));
   // Materials: the same surface with another material on one triangle is another production.
   dg::TriangleMesh painted = box, repainted = box;
   painted.materials.assign(box.triangles.size(), 0);
   repainted.materials = painted.materials;
   repainted.materials[0] = 1;
   CHECK_FALSE(dg::same_production(leaf(0, painted), leaf(0, repainted), tolerance));
+}
+
+TEST_CASE("same production: a hidden second layer of the same faces is the same shape", "[grammar][context_free]") {
+  // The Scopia chandelier's copies of one part differ so: one holds its 810 duplicated triangles
+  // (half of them cut otherwise), the other not, and areas of 264 against 153 units^2 kept them
+  // apart; every variant that swapped them was the exemplar to within 0.01 eps.
+  const double tolerance = 0.05;
+  const dg::TriangleMesh box = dg::test::make_box(Vec3(0, 0, 0), Vec3(1, 2, 3));
+  dg::TriangleMesh doubled = box;
+  dg::test::append(doubled, dg::test::split_at_centroids(box));
+  CHECK(dg::same_production(leaf(0, box), leaf(0, doubled), tolerance));
+  CHECK(dg::same_production(leaf(0, doubled), leaf(0, box), tolerance));
+  // A second layer a little outside is another shape.
+  dg::TriangleMesh shell = box;
+  dg::test::append(shell, dg::test::make_box(Vec3(-0.2, -0.2, -0.2), Vec3(1.2, 2.2, 3.2)));
+  CHECK_FALSE(dg::same_production(leaf(0, box), leaf(0, shell), tolerance));
 }

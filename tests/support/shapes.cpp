@@ -49,6 +49,21 @@ void append(TriangleMesh& mesh, const TriangleMesh& part) {
   for (Triangle t : part.triangles) mesh.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
 }
 
+TriangleMesh split_at_centroids(const TriangleMesh& mesh) {
+  TriangleMesh split = mesh;
+  split.triangles.clear();
+  split.materials.clear();
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const auto m = static_cast<std::uint32_t>(split.positions.size());
+    split.positions.push_back((a + b + c) / 3.0);
+    const Triangle& tri = mesh.triangles[t];
+    split.triangles.insert(split.triangles.end(), {{tri[0], tri[1], m}, {tri[1], tri[2], m}, {tri[2], tri[0], m}});
+    if (mesh.has_materials()) split.materials.insert(split.materials.end(), 3, mesh.materials[t]);
+  }
+  return split;
+}
+
 Eigen::Matrix3d general_rotation() {
   return (Eigen::AngleAxisd(0.54, Vec3::UnitZ()) * Eigen::AngleAxisd(0.40, Vec3::UnitY()) *
           Eigen::AngleAxisd(0.30, Vec3::UnitX()))

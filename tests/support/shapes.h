@@ -14,6 +14,10 @@ TriangleMesh make_sphere(const Vec3& centre, double radius, int rings, int segme
 /// Appends `part` to `mesh` (indices shifted).
 void append(TriangleMesh& mesh, const TriangleMesh& part);
 
+/// `mesh` with every triangle split at its centroid into three: the same surface, triangulated
+/// otherwise.
+TriangleMesh split_at_centroids(const TriangleMesh& mesh);
+
 /// A rotation about no coordinate axis (0.54, 0.40 and 0.30 rad about z, y and x): a model
 /// turned by it has no motion that carries the voxel grid onto itself.
 Eigen::Matrix3d general_rotation();

@@ -7,6 +7,7 @@
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"
+#include "support/shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -15,10 +16,39 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace {
 
 dg::ShapeGrammar facade_grammar() { return dg::test::asset_grammar("facade", {{"columns", 3}, {"rows", 4}}, false); }
+
+// Two unit boxes stacked along z: the lower one the axiom's terminal, the upper one N1's, whose
+// seam is the plane z = 1. N1 has two productions: the box, and the same box with each of its
+// triangles split at the centroid (another triangulation of the same surface).
+dg::ShapeGrammar stacked_boxes_grammar() {
+  dg::ShapeGrammar grammar;
+  grammar.r = 0.2;
+  grammar.eps = 0.05;
+  const dg::TriangleMesh lower = dg::test::make_box(dg::Vec3(0, 0, 0), dg::Vec3(1, 1, 1));
+  const dg::TriangleMesh upper = dg::test::make_box(dg::Vec3(0, 0, 1), dg::Vec3(1, 1, 2));
+  const dg::TriangleMesh split = dg::test::split_at_centroids(upper);
+  grammar.exemplar = lower;
+  dg::test::append(grammar.exemplar, upper);
+  dg::ShapeNonterminal n1;
+  n1.name = "N1";
+  n1.seam.normal = dg::Vec3::UnitZ();
+  n1.seam.offset = 1.0;
+  grammar.context_free.nonterminals.push_back(n1);
+  grammar.context_free.axiom.terminal = lower;
+  grammar.context_free.axiom.children.push_back({0, dg::RigidTransform{}, 0});
+  for (const dg::TriangleMesh* terminal : {&upper, &split}) {
+    dg::ShapeProduction p;
+    p.lhs = 0;
+    p.terminal = *terminal;
+    grammar.context_free.productions.push_back(p);
+  }
+  return grammar;
+}
 
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -70,6 +100,9 @@ TEST_CASE("generate CLI: same seed, same files, different seed, different files"
     REQUIRE(std::system((cli + " generate " + grammar + " --count 4 --seed 5 -q -o " + (folder / run).string()).c_str()) == 0);
   REQUIRE(std::system((cli + " generate " + grammar + " --count 4 --seed 6 -q -o " + (folder / "c").string()).c_str()) == 0);
   CHECK(file_bytes(folder / "a" / "manifest.json") == file_bytes(folder / "b" / "manifest.json"));
+  // Every variant differs from the exemplar (the fence's grid ranges allow other counts).
+  for (const nlohmann::json& variant : nlohmann::json::parse(file_bytes(folder / "a" / "manifest.json"))["variants"])
+    CHECK(variant.at("changed").get<bool>());
   bool all_same = true;
   for (int i = 0; i < 4; ++i) {
     const std::string name = "variant_0000" + std::to_string(i) + ".obj";
@@ -125,4 +158,32 @@ TEST_CASE("automatic variants of a grammar where nothing varies are an input err
   options.rules = dg::VariantRules::automatic;
   options.derivation.max_depth = 24;
   CHECK(dg::plan_variant(grammar, 1, 0, options).context_free);
+}
+
+TEST_CASE("a context-free alternative of the same surface is no change", "[synthesis][variants]") {
+  // zdm2's grammar has such alternatives (other decompositions of the same buildings): 1 of 6
+  // variants of seed 1 was the exemplar to 1e-8 units while the manifest called it changed.
+  const dg::ShapeGrammar grammar = stacked_boxes_grammar();
+  dg::VariantOptions options;
+  options.rules = dg::VariantRules::context_free;
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    const dg::Variant variant = dg::build_variant(grammar, dg::plan_variant(grammar, 3, i, options), options);
+    CHECK_FALSE(variant.derivation.changed);
+    CHECK(dg::test::hausdorff_distance(variant.mesh, grammar.exemplar) < 1e-9);
+  }
+}
+
+TEST_CASE("grid variants are not the exemplar's counts when the ranges allow others", "[synthesis][variants]") {
+  // Facade(3 x 4) with counts within a factor 1.5: 12 pairs of counts, one of them the
+  // exemplar's, which 1 in 12 plans drew before.
+  const dg::ShapeGrammar grammar = facade_grammar();
+  dg::VariantOptions options;
+  options.range_factor = 1.5;
+  std::vector<int> exemplar_counts;
+  for (const dg::GridDirection& d : grammar.grids.front().rule.directions) exemplar_counts.push_back(d.count);
+  std::set<std::vector<int>> drawn;
+  for (std::uint64_t i = 0; i < 60; ++i) drawn.insert(dg::plan_variant(grammar, 5, i, options).grid_counts.front());
+  CHECK(drawn.size() >= 8);
+  CHECK_FALSE(drawn.contains(exemplar_counts));
 }

@@ -87,7 +87,7 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_triangles = options->max_triangles;
     const MeshRenderOptions picture = picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
-    std::size_t limited = 0, rebuilt = 0;
+    std::size_t limited = 0, rebuilt = 0, unchanged = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t n = 0; n < options->count; ++n) {
@@ -107,12 +107,18 @@ void add_generate_command(CLI::App& app) {
       for (std::size_t p : d.productions) productions.push_back(p);
       if (d.depth_limited || d.triangle_limited) ++limited;
       if (d.restarts > variant_options.derivation.restarts) ++rebuilt;
+      bool changed = d.changed;
+      for (std::size_t g = 0; g < plan.grid_counts.size(); ++g)
+        for (std::size_t i = 0; i < plan.grid_counts[g].size(); ++i)
+          changed = changed || plan.grid_counts[g][i] != grammar.grids[g].rule.directions[i].count;
+      if (!changed) ++unchanged;
       variants.push_back({{"index", index},
                           {"file", file},
                           {"seed", plan.seed},
                           {"rules", plan.context_free ? "context-free" : "grid"},
                           {"grids", grids},
                           {"productions", productions},
+                          {"changed", changed},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
                           {"restarts", d.restarts},
@@ -129,6 +135,11 @@ void add_generate_command(CLI::App& app) {
       fmt::print(stderr,
                  "note: {} variant(s) are the exemplar rebuilt: {} derivations in a row left some exemplar piece no room\n",
                  rebuilt, variant_options.derivation.restarts + 1);
+    if (unchanged > 0 && !options->quiet)
+      fmt::print(stderr,
+                 "note: {} variant(s) have the exemplar's shape: no draw (up to 9 per variant) chose a production of "
+                 "another shape\n",
+                 unchanged);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
                                      {"count", options->count},     {"orientation", options->orientation},
                                      {"variants", variants}};
