@@ -12,16 +12,21 @@ namespace {
 using CellKey = std::array<std::int64_t, 3>;
 
 // The cells (cubes of edge `cell`, model units) that points of the listed triangles of `mesh`
-// fall in, sampled on each triangle in rows parallel to its longest edge, at most cell / 2 apart
-// along and across them (so a sliver costs as few samples as its area needs); sorted, without
-// repeats.
+// fall in, sampled on each triangle in rows parallel to its longest edge, at most one cell apart
+// along and across them (so a sliver costs as few samples as its area needs; a cell the surface
+// only clips may be missed, but a neighbour of it is not); sorted, without repeats.
 std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, double cell) {
   std::vector<CellKey> cells;
   auto add = [&](const Vec3& p) {
     cells.push_back({static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
                      static_cast<std::int64_t>(std::floor(p.z() / cell))});
   };
-  const double spacing = 0.5 * cell;
+  auto compact = [&] {
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  };
+  std::size_t compact_at = 4096;
+  const double spacing = cell;
   for (std::size_t t : triangles) {
     auto [a, b, c] = mesh.corners(t);
     // Make a-b the longest edge.
@@ -36,9 +41,14 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
       const int steps = std::max(1, static_cast<int>(std::ceil((1.0 - s) * length / spacing)));
       for (int i = 0; i <= steps; ++i) add(from + (static_cast<double>(i) / steps) * (to - from));
     }
+    // Many samples fall in one cell: repeats go whenever the list doubles, so memory follows the
+    // cells, not the samples.
+    if (cells.size() >= compact_at) {
+      compact();
+      compact_at = 2 * cells.size() + 4096;
+    }
   }
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  compact();
   return cells;
 }
 
