@@ -101,8 +101,8 @@ TEST_CASE("generate CLI: same seed, same files, different seed, different files"
   REQUIRE(std::system((cli + " generate " + grammar + " --count 4 --seed 6 -q -o " + (folder / "c").string()).c_str()) == 0);
   CHECK(file_bytes(folder / "a" / "manifest.json") == file_bytes(folder / "b" / "manifest.json"));
   // Every variant differs from the exemplar (the fence's grid ranges allow other counts).
-  for (const nlohmann::json& variant : nlohmann::json::parse(file_bytes(folder / "a" / "manifest.json"))["variants"])
-    CHECK(variant.at("changed").get<bool>());
+  const nlohmann::json manifest = nlohmann::json::parse(file_bytes(folder / "a" / "manifest.json"));
+  for (const nlohmann::json& variant : manifest.at("variants")) CHECK(variant.at("changed").get<bool>());
   bool all_same = true;
   for (int i = 0; i < 4; ++i) {
     const std::string name = "variant_0000" + std::to_string(i) + ".obj";
