@@ -26,7 +26,6 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   };
   std::size_t compact_at = 4096;
-  const double spacing = cell;
   for (std::size_t t : triangles) {
     auto [a, b, c] = mesh.corners(t);
     // Make a-b the longest edge.
@@ -34,11 +33,11 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
     else if ((a - c).norm() > (b - a).norm()) std::tie(a, b, c) = std::tuple{c, a, b};
     const double length = (b - a).norm();
     const double height = length > 0.0 ? (b - a).cross(c - a).norm() / length : (c - a).norm();
-    const int rows = std::max(1, static_cast<int>(std::ceil(height / spacing)));
+    const int rows = std::max(1, static_cast<int>(std::ceil(height / cell)));
     for (int k = 0; k <= rows; ++k) {
       const double s = static_cast<double>(k) / rows;  // row from a-b (s = 0) to c (s = 1)
       const Vec3 from = a + s * (c - a), to = b + s * (c - b);
-      const int steps = std::max(1, static_cast<int>(std::ceil((1.0 - s) * length / spacing)));
+      const int steps = std::max(1, static_cast<int>(std::ceil((1.0 - s) * length / cell)));
       for (int i = 0; i <= steps; ++i) add(from + (static_cast<double>(i) / steps) * (to - from));
     }
     // Many samples fall in one cell: repeats go whenever the list doubles, so memory follows the
@@ -87,7 +86,7 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
   const BoundingBox ba = a.bounds(), bb = b.bounds();
   if ((ba.min - bb.min).norm() > tolerance || (ba.max - bb.max).norm() > tolerance) return false;
   // Each material's surface covers the other's; a material with no more than tolerance^2 of area
-  // in either terminal may be missing from the other.
+  // in one mesh may be missing from the other.
   const std::map<std::uint32_t, MaterialPart> parts_a = parts_by_material(a), parts_b = parts_by_material(b);
   const double negligible = tolerance * tolerance;
   auto matched = [&](const std::map<std::uint32_t, MaterialPart>& from, const std::map<std::uint32_t, MaterialPart>& to) {

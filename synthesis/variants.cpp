@@ -87,10 +87,13 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
       if (variant.derivation.changed || (draw == 0 && !derivation_has_choice(grammar.context_free, derivation))) break;
     }
     variant.mesh = std::move(variant.derivation.mesh);
+    variant.changed = variant.derivation.changed;
     return variant;
   }
   const GridWithPieces& grid = grammar.grids.front();
   variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), kSeamWeldFraction * grammar.eps);
+  for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
+    variant.changed = variant.changed || plan.grid_counts.front()[i] != grid.rule.directions[i].count;
   return variant;
 }
 

@@ -36,6 +36,9 @@ struct VariantPlan {
 struct Variant {
   TriangleMesh mesh;
   ShapeDerivation derivation;  ///< context-free variants: what was applied (its mesh is moved to `mesh`)
+  /// It differs from the exemplar: other grid counts, or a derivation whose surface is not the
+  /// exemplar's (see build_variant).
+  bool changed = false;
 };
 
 /// Seed of variant `index` of a batch started with `seed` (SplitMix64 of both).
@@ -48,7 +51,7 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
 /// slot's exemplar production, or whose other productions give the exemplar's surface again
 /// (within eps, see same_surface: another decomposition of the same parts), is drawn again (up
 /// to 8 times, with seeds derived from the plan's), so variants differ from the exemplar whenever
-/// the grammar offers a choice; `derivation.changed` says whether the result does.
+/// the grammar offers a choice; `changed` says whether the result does.
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -107,18 +107,14 @@ void add_generate_command(CLI::App& app) {
       for (std::size_t p : d.productions) productions.push_back(p);
       if (d.depth_limited || d.triangle_limited) ++limited;
       if (d.restarts > variant_options.derivation.restarts) ++rebuilt;
-      bool changed = d.changed;
-      for (std::size_t g = 0; g < plan.grid_counts.size(); ++g)
-        for (std::size_t i = 0; i < plan.grid_counts[g].size(); ++i)
-          changed = changed || plan.grid_counts[g][i] != grammar.grids[g].rule.directions[i].count;
-      if (!changed) ++unchanged;
+      if (!variant.changed) ++unchanged;
       variants.push_back({{"index", index},
                           {"file", file},
                           {"seed", plan.seed},
                           {"rules", plan.context_free ? "context-free" : "grid"},
                           {"grids", grids},
                           {"productions", productions},
-                          {"changed", changed},
+                          {"changed", variant.changed},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
                           {"restarts", d.restarts},
@@ -137,8 +133,7 @@ void add_generate_command(CLI::App& app) {
                  rebuilt, variant_options.derivation.restarts + 1);
     if (unchanged > 0 && !options->quiet)
       fmt::print(stderr,
-                 "note: {} variant(s) have the exemplar's shape: no draw (up to 9 per variant) chose a production of "
-                 "another shape\n",
+                 "note: {} variant(s) have the exemplar's shape: in up to 9 draws each, the rules gave nothing else\n",
                  unchanged);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
                                      {"count", options->count},     {"orientation", options->orientation},
