@@ -754,10 +754,9 @@ class Builder {
   // Whether `motion` carries the rest of the model outside `from`'s docker and band onto the
   // surface outside `to`'s docker (up to 1 % of its cells, tested on at most about 5,000 of them).
   bool rest_maps_onto(const Node& from, const Node& to, const RigidTransform& motion) const {
-    std::vector<char> skip(surface_.cell_count(), 0), in_docker(surface_.cell_count(), 0);
-    for (const Cells* cells : {&from.site, &from.docker})
-      for (std::uint32_t c : *cells) skip[c] = 1;
-    for (std::uint32_t c : to.docker) in_docker[c] = 1;
+    std::vector<char> skip = mask_of(from.site, surface_.cell_count());
+    for (std::uint32_t c : from.docker) skip[c] = 1;
+    const std::vector<char> in_docker = mask_of(to.docker, surface_.cell_count());
     const std::size_t rest = surface_.cell_count() - static_cast<std::size_t>(std::count(skip.begin(), skip.end(), 1));
     const std::size_t stride = std::max<std::size_t>(1, rest / 5000);
     std::size_t tested = 0, missed = 0, seen = 0;
