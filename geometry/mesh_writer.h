@@ -35,6 +35,9 @@ void write_mtl(std::ostream& out, const std::vector<Material>& materials, const 
 /// lists (+ uchar red green blue per face with `face_colors`, one per triangle).
 void write_ply(std::ostream& out, const TriangleMesh& mesh, const std::vector<Rgb>* colors,
                const std::vector<Rgb>* face_colors = nullptr);
+/// PLY binary little endian of a point cloud: double x y z (+ double nx ny nz when every point
+/// has a normal, + uchar red green blue with `colors`), no face element.
+void write_ply_points(std::ostream& out, const PointCloud& cloud, const std::vector<Rgb>* colors);
 /// glTF 2.0 binary: one scene, one node, one mesh; float32 POSITION with min/max, optional
 /// COLOR_0 (normalized unsigned bytes), uint32 indices. One primitive, or with `materials` (the
 /// mesh must carry material indices) one primitive per material used, in material order, each

@@ -170,6 +170,14 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
   });
 }
 
+void write_point_cloud(const std::filesystem::path& path, const PointCloud& cloud, const std::vector<Rgb>* colors) {
+  if (output_extension(path) != ".ply") throw InputError(path.string() + ": point clouds are written as .ply only");
+  if (colors && colors->size() != cloud.positions.size())
+    throw std::invalid_argument("write_point_cloud: " + std::to_string(colors->size()) + " colours for " +
+                                std::to_string(cloud.positions.size()) + " points");
+  write_file_atomically(path, [&](std::ostream& out) { detail::write_ply_points(out, cloud, colors); });
+}
+
 void write_mesh_with_materials(const std::filesystem::path& path, const TriangleMesh& mesh,
                                const std::vector<Material>& materials) {
   if (materials.empty() || !mesh.has_materials()) {

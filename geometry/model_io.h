@@ -25,6 +25,12 @@ using Rgb = std::array<std::uint8_t, 3>;
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh,
                 const std::vector<Rgb>* vertex_colors = nullptr);
 
+/// Writes a point cloud as binary little-endian PLY (double x y z, double nx ny nz when every
+/// point has a normal, uchar red green blue with `colors`: one per point), atomically; the file
+/// has no face element, so read_model gives the cloud back. Throws InputError unless the path
+/// ends in .ply or when it cannot be written.
+void write_point_cloud(const std::filesystem::path& path, const PointCloud& cloud, const std::vector<Rgb>* colors = nullptr);
+
 /// Writes a mesh with its materials (`materials`, indexed by mesh.materials) as write_mesh does,
 /// atomically: OBJ with "mtllib NAME.mtl" and "usemtl" before each run of triangles of one
 /// material, plus NAME.mtl next to it ("newmtl", "Kd" = the diffuse colour, "d" = the opacity

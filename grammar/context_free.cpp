@@ -9,7 +9,7 @@
 #include "grammar/cell_sets.h"
 #include "grammar/seam_curve.h"
 #include "grammar/seam_cut.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "grammar/same_production.h"
 #include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
@@ -838,6 +838,11 @@ ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, con
                                               const ContextFreeOptions& options, ContextFreeStats* stats,
                                               const ProgressCallback& progress) {
   ContextFreeStats local;
+  if (prepared.model.is_point_cloud()) {
+    local.point_cloud = true;
+    if (stats) *stats = local;
+    return {};
+  }
   Builder builder(prepared, options, progress);
   ContextFreeGrammar grammar = builder.build(sites, local);
   if (stats) *stats = local;

@@ -99,10 +99,13 @@ struct ContextFreeStats {
   /// Non-terminals dropped because no derivation reaches them from the axiom (their locations
   /// lie in alternatives that the axiom's independent set of sites left out).
   std::size_t unreachable_nonterminals = 0;
+  /// The exemplar is a point cloud: no context-free rules are built for it (their pieces are cut
+  /// along seam surfaces through triangles; only grid rules cut points).
+  bool point_cloud = false;
 };
 
-/// Builds the context-free grammar of a prepared mesh from its docking sites. Deterministic
-/// for a given seed. `progress` hears stage "context-free rules" with the fraction done (most of
+/// Builds the context-free grammar of a prepared mesh from its docking sites (empty for a point
+/// cloud, see ContextFreeStats::point_cloud). Deterministic for a given seed. `progress` hears stage "context-free rules" with the fraction done (most of
 /// the time goes into cutting the exemplar along the seams of every site location).
 ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, const DockingSiteResult& sites,
                                               const ContextFreeOptions& options, ContextFreeStats* stats = nullptr,

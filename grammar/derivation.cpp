@@ -1,6 +1,6 @@
 #include "grammar/derivation.h"
 
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "grammar/rule_syntax.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // Derivation: parallel rewriting of a module string by an L-system's productions.
 
 #include "grammar/lsystem.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -266,9 +266,10 @@ void sites_of_motion(const MotionContext& m, const DockingSiteOptions& options, 
   }
 }
 
-// r-symmetric cells of the inverse motion, grown from the images of the forward region.
+// r-symmetric cells of the inverse motion, grown from the images of the forward region (a
+// point cloud's isolated outlier cells count as symmetric, as in the forward region).
 std::vector<char> inverse_region(const VoxelSurface& surface, const CellMatcher& matcher, const DetectedSymmetry& symmetry,
-                                 const RigidTransform& inverse) {
+                                 const RigidTransform& inverse, bool point_cloud) {
   const Cells& forward = symmetry.region.r_symmetric_cells;
   Cells seeds;
   const std::size_t step = std::max<std::size_t>(1, forward.size() / 64);
@@ -278,7 +279,7 @@ std::vector<char> inverse_region(const VoxelSurface& surface, const CellMatcher&
   }
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  const SymmetricRegion region = symmetric_region(matcher, surface, inverse, seeds, false);
+  const SymmetricRegion region = symmetric_region(matcher, surface, inverse, seeds, point_cloud);
   return mask_of(region.r_symmetric_cells, surface.cell_count());
 }
 
@@ -288,8 +289,9 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
                                      const DockingSiteOptions& options, const ProgressCallback& progress) {
   DockingSiteResult result;
   const VoxelSurface& surface = prepared.surface;
-  if (prepared.model.is_point_cloud() || surface.cell_count() == 0) return result;
-  const CellMatcher matcher(surface, nullptr);
+  if (surface.cell_count() == 0) return result;
+  const bool point_cloud = prepared.model.is_point_cloud();
+  const CellMatcher matcher(surface, point_cloud ? &prepared.model.cloud : nullptr);
   // One member per family, the smallest power found: higher powers (2t, 3t, ...) repeat its
   // operations.
   std::vector<int> smallest_power(symmetries.families.size(), std::numeric_limits<int>::max());
@@ -316,7 +318,7 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
       const bool inverse = m % 2 == 1;
       const DetectedSymmetry& symmetry = symmetries.symmetries[i];
       const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
-      std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t)
+      std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t, point_cloud)
                                             : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
       const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
       DockingSiteResult& local = per_motion[m];

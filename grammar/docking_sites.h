@@ -71,7 +71,7 @@ struct DockingSiteResult {
   DockingSiteStats stats;
 };
 
-/// Elementary docking sites of the top symmetries of a prepared mesh. Parallel over motions
+/// Elementary docking sites of the top symmetries of a prepared mesh or point cloud. Parallel over motions
 /// (TBB) and deterministic for any thread count. `progress` hears stage "docking sites" with
 /// the fraction of motions done, between batches of motions.
 DockingSiteResult find_docking_sites(const PreparedModel& prepared, const SymmetryResult& symmetries,

@@ -146,7 +146,11 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
   if (error) throw InputError(folder.string() + ": cannot create the folder for grammar pieces");
   const std::string folder_name = folder.filename().string();
 
-  write_mesh(folder / "exemplar.ply", grammar.exemplar);
+  const bool points = is_point_grammar(grammar);
+  if (points)
+    write_point_cloud(folder / "exemplar.ply", grammar.exemplar_points);
+  else
+    write_mesh(folder / "exemplar.ply", grammar.exemplar);
   nlohmann::json grids = nlohmann::json::array();
   for (const GridWithPieces& grid : grammar.grids) {
     nlohmann::json directions = nlohmann::json::array(), transforms = nlohmann::json::array(), counts = nlohmann::json::array();
@@ -163,12 +167,15 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
     nlohmann::json pieces = nlohmann::json::array();
     for (const GridPiece& piece : grid.pieces) {
       const std::string file = grid.rule.name + "_" + piece_name(piece.classes) + ".ply";
-      write_mesh(folder / file, piece.mesh);
-      nlohmann::json entry = {{"name", piece_name(piece.classes)},
-                              {"classes", piece.classes},
-                              {"file", folder_name + "/" + file},
-                              {"triangles", piece.mesh.triangles.size()}};
-      add_material_runs(entry, "material_runs", piece.mesh, grammar);
+      nlohmann::json entry = {{"name", piece_name(piece.classes)}, {"classes", piece.classes}, {"file", folder_name + "/" + file}};
+      if (points) {
+        write_point_cloud(folder / file, piece.points);
+        entry["points"] = piece.points.positions.size();
+      } else {
+        write_mesh(folder / file, piece.mesh);
+        entry["triangles"] = piece.mesh.triangles.size();
+        add_material_runs(entry, "material_runs", piece.mesh, grammar);
+      }
       pieces.push_back(std::move(entry));
     }
     grids.push_back({{"name", grid.rule.name},
@@ -192,6 +199,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                              {"version", kGrammarFileVersion},
                              {"units", "model units of the source file"},
                              {"source", {{"name", grammar.source_name}, {"hash_fnv1a64", grammar.source_hash}}},
+                             {"surface", points ? "points" : "mesh"},
                              {"r", grammar.r},
                              {"eps", grammar.eps},
                              {"exemplar", folder_name + "/exemplar.ply"},
@@ -298,7 +306,21 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
                                           where + ": " + relative);
     return mesh;
   };
-  grammar.exemplar = load(field<std::string>(document, "exemplar", where), document, "exemplar_material_runs");
+  // "surface": "points" (version 4) when the exemplar and the pieces are point clouds.
+  const bool points = version >= 4 && field<std::string>(document, "surface", where) == "points";
+  if (version >= 4 && !points && field<std::string>(document, "surface", where) != "mesh")
+    throw InputError(where + ": \"surface\" must be \"mesh\" or \"points\"");
+  auto load_points = [&](const std::string& relative) {
+    const std::filesystem::path file = path.parent_path() / relative;
+    if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar point cloud " + file.string() + " is missing");
+    Model model = read_model(file);
+    if (!model.is_point_cloud()) throw InputError(where + ": sidecar " + file.string() + " is not a point cloud");
+    return std::move(model.cloud);
+  };
+  if (points)
+    grammar.exemplar_points = load_points(field<std::string>(document, "exemplar", where));
+  else
+    grammar.exemplar = load(field<std::string>(document, "exemplar", where), document, "exemplar_material_runs");
   for (const nlohmann::json& grid : field<nlohmann::json>(document, "grids", where)) {
     GridWithPieces entry;
     entry.rule.name = field<std::string>(grid, "name", where);
@@ -341,12 +363,16 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
       piece.classes = field<std::vector<int>>(p, "classes", where);
       if (piece.classes.size() != entry.rule.directions.size())
         throw InputError(where + ": piece " + field<std::string>(p, "name", where) + " has the wrong number of classes");
-      piece.mesh = load(field<std::string>(p, "file", where), p);
+      if (points)
+        piece.points = load_points(field<std::string>(p, "file", where));
+      else
+        piece.mesh = load(field<std::string>(p, "file", where), p);
       entry.pieces.push_back(std::move(piece));
     }
     grammar.grids.push_back(std::move(entry));
   }
   if (version >= 2) read_context_free(document, version, where, load, grammar.context_free);
+  if (points && !grammar.context_free.empty()) throw InputError(where + ": a point-cloud grammar has no context-free rules");
   return grammar;
 }
 

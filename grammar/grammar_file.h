@@ -14,7 +14,8 @@
 
 namespace dg {
 
-inline constexpr int kGrammarFileVersion = 3;  ///< versions 1 (grids only) and 2 (planar seams) are still read
+/// Versions 1 (grids only), 2 (planar seams) and 3 (no point-cloud exemplars) are still read.
+inline constexpr int kGrammarFileVersion = 4;
 
 /// A grid rule with its pieces and where they are stored.
 struct GridWithPieces {
@@ -32,12 +33,25 @@ struct ShapeGrammar {
   std::string up_axis;
   std::vector<GridWithPieces> grids;
   ContextFreeGrammar context_free;  ///< empty when no docking site gave a production
-  /// The exemplar's cleaned mesh (used when no grid is resized and for reference).
+  /// The exemplar's cleaned mesh (used when no grid is resized and for reference); empty when
+  /// the exemplar is a point cloud.
   TriangleMesh exemplar;
+  /// The exemplar's points when it is a point cloud (then every grid piece holds points too).
+  PointCloud exemplar_points;
   /// The exemplar's materials, indexed by the materials of the exemplar and of every piece and
   /// terminal; empty when the exemplar names none.
   std::vector<Material> materials;
 };
+
+/// True when the grammar was made from a point cloud: its exemplar and pieces are points.
+inline bool is_point_grammar(const ShapeGrammar& grammar) {
+  return grammar.exemplar.triangles.empty() && !grammar.exemplar_points.positions.empty();
+}
+
+/// Bounding box of the grammar's exemplar (its mesh, or its points for a point-cloud grammar).
+inline BoundingBox exemplar_bounds(const ShapeGrammar& grammar) {
+  return is_point_grammar(grammar) ? grammar.exemplar_points.bounds() : grammar.exemplar.bounds();
+}
 
 /// Hex FNV-1a 64-bit hash of a file's bytes (throws InputError when unreadable).
 std::string file_hash(const std::filesystem::path& path);

@@ -114,7 +114,8 @@ std::vector<double> unit_slab_areas(const TriangleMesh& mesh, const GridDirectio
 // Picks the repeated unit of a direction: the first slab of the longest run of slabs that are
 // exact copies of the next, judged by the voxel cells (no asymmetric cell strictly inside,
 // `half` the cells' half extent along the direction) and by the mesh (the same surface area,
-// which also tells back-to-back duplicate faces, invisible to the cells, apart). The slabs
+// which also tells back-to-back duplicate faces, invisible to the cells, apart; a point cloud
+// has no triangles, so its cells alone judge). The slabs
 // before the run stay in the head and those after it in the tail, so damage in one unit (a fin,
 // a doubled face, a differing end stake) is placed once instead of copied. Without such a run
 // the first slab stays the unit.
@@ -175,12 +176,14 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   slab_cells.finish();
 
   // Candidate offsets of the first plane, taken modulo the pitch: a fine sampling of one period
-  // plus every vertex coordinate (cuts through existing seams need no new vertices).
+  // plus every vertex coordinate of a mesh (cuts through existing seams need no new vertices; a
+  // point cloud has no seams, only its extent counts).
+  const bool points = prepared.model.is_point_cloud();
   double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
   std::map<double, int> vertex_offsets;
-  for (const Vec3& p : prepared.model.mesh.positions) {
+  for (const Vec3& p : points ? prepared.model.cloud.positions : prepared.model.mesh.positions) {
     const double s = d.dot(p);
-    ++vertex_offsets[s];
+    if (!points) ++vertex_offsets[s];
     lowest = std::min(lowest, s);
     highest = std::max(highest, s);
   }
@@ -514,7 +517,6 @@ std::string piece_name(const std::vector<int>& classes) {
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options, const ProgressCallback& progress) {
   std::vector<GridRule> grids;
-  if (prepared.model.is_point_cloud()) return grids;
   std::vector<GridDirection> translations, screws;
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
   for (std::size_t f = 0; f < symmetries.families.size(); ++f) {
@@ -565,8 +567,9 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry))
       grid.directions.push_back(*direction);
   }
-  // No translation cuts across the whole model: a row of parts may, keeping other parts whole.
-  if (grid.directions.empty())
+  // No translation cuts across the whole model: a row of parts may, keeping other parts whole
+  // (a mesh's connected components; a point cloud has none).
+  if (grid.directions.empty() && !prepared.model.is_point_cloud())
     if (std::optional<RowOfParts> row = row_of_parts(prepared, symmetries, options)) {
       grid.min_count = row->fewest_units;
       grid.directions.push_back(std::move(row->direction));
@@ -688,7 +691,36 @@ std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule&
     by_class[classes].push_back(t);
   }
   std::vector<GridPiece> pieces;
-  for (const auto& [classes, triangles] : by_class) pieces.push_back({classes, submesh(cut, triangles)});
+  for (const auto& [classes, triangles] : by_class) pieces.push_back({classes, submesh(cut, triangles), {}});
+  return pieces;
+}
+
+std::size_t slab_of_point(const GridDirection& direction, const Vec3& point) {
+  // Planes cut + j pitch, j = 0 .. count.
+  const double planes_below = std::floor((direction.direction.dot(point) - direction.cut) / direction.pitch) + 1.0;
+  return static_cast<std::size_t>(std::clamp(planes_below, 0.0, static_cast<double>(direction.count + 1)));
+}
+
+std::vector<GridPiece> cut_grid_points(const PointCloud& cloud, const GridRule& grid) {
+  std::map<std::vector<int>, std::vector<std::size_t>> by_class;
+  for (std::size_t p = 0; p < cloud.positions.size(); ++p) {
+    std::vector<int> classes;
+    for (const GridDirection& direction : grid.directions) {
+      const int c = slab_class(slab_of_point(direction, cloud.positions[p]), direction);
+      if (c < 0) break;
+      classes.push_back(c);
+    }
+    if (classes.size() == grid.directions.size()) by_class[classes].push_back(p);
+  }
+  std::vector<GridPiece> pieces;
+  for (const auto& [classes, indices] : by_class) {
+    GridPiece piece{classes, {}, {}};
+    for (std::size_t p : indices) {
+      piece.points.positions.push_back(cloud.positions[p]);
+      if (cloud.has_normals()) piece.points.normals.push_back(cloud.normals[p]);
+    }
+    pieces.push_back(std::move(piece));
+  }
   return pieces;
 }
 

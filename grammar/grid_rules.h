@@ -109,15 +109,26 @@ struct GridCut {
 /// they stay exact doubles. Every triangle keeps the material of the triangle it was cut from.
 GridCut cut_along_grid(const TriangleMesh& mesh, const GridRule& grid, double eps);
 
-/// A piece of a grid: the triangles whose slab classes along the directions are `classes`.
+/// A piece of a grid: the triangles (or, for a point-cloud exemplar, the points) whose slab
+/// classes along the directions are `classes`.
 struct GridPiece {
   std::vector<int> classes;  ///< one of 0 (head), 1 (unit), 2 (tail) per direction
-  TriangleMesh mesh;
+  TriangleMesh mesh;         ///< empty for a point-cloud exemplar
+  PointCloud points;         ///< a point-cloud exemplar's points in the piece (normals when it had them)
 };
 
 /// Cuts the cleaned model into the pieces of `grid` (classes with no triangles are left out).
 /// Piece names follow the paper: r11 .. r33 for a 2-grid (1 = head, 2 = unit, 3 = tail).
 std::vector<GridPiece> cut_grid_pieces(const TriangleMesh& mesh, const GridRule& grid, double eps);
+
+/// Slab of a point along `direction` (as GridCut::slabs counts them): the number of its planes at
+/// or below the point, 0 .. count + 1.
+std::size_t slab_of_point(const GridDirection& direction, const Vec3& point);
+
+/// Cuts a point cloud into the pieces of `grid`: each point (with its normal) goes to the slab
+/// it lies in along every direction, a point on a plane to the slab after it. Classes with no
+/// points are left out; names and classes as for cut_grid_pieces.
+std::vector<GridPiece> cut_grid_points(const PointCloud& cloud, const GridRule& grid);
 
 /// "r" followed by 1-based classes, e.g. {0, 1} -> "r12".
 std::string piece_name(const std::vector<int>& classes);

@@ -3,7 +3,7 @@
 // maximal independent sets of the conflict graph, over the children of a node of the inclusion
 // tree with one hierarchy level unfolded.
 
-#include "grammar/random.h"
+#include "geometry/random.h"
 
 #include <cstddef>
 #include <functional>

@@ -253,9 +253,12 @@ RigidTransform canonical_motion(const RigidTransform& transform, double slide_to
   constexpr double translation_angle = 1e-3;
   const double angle = transform.angle();
   Vec3 axis = angle < translation_angle ? transform.translation : transform.axis();
-  auto reference_sign = [](const Vec3& v) {
+  // Components below this fraction of the length are fitting noise (a scan's translation along
+  // z came out as (3e-4, 0, -3)) and do not choose the orientation.
+  constexpr double noise = 1e-3;
+  auto reference_sign = [&](const Vec3& v) {
     for (int k = 0; k < 3; ++k)
-      if (std::abs(v[k]) > 1e-9 * v.norm()) return v[k] > 0.0 ? 1.0 : -1.0;
+      if (std::abs(v[k]) > noise * v.norm()) return v[k] > 0.0 ? 1.0 : -1.0;
     return 1.0;
   };
   axis *= reference_sign(axis);  // oriented by its first clearly non-zero component

@@ -56,7 +56,8 @@ Candidate refine_candidate(const RigidTransform& transform, const std::vector<Ke
                            const CandidateOptions& options);
 
 /// T or its inverse, whichever is canonical: with the screw axis oriented to have a positive
-/// component along the first axis where it is non-zero, translations and screws keep a positive
+/// component along the first axis where it is clearly non-zero (above 1e-3 of its length, so
+/// that fitting noise on a motion along an axis does not choose), translations and screws keep a positive
 /// slide and rotations an angle in (0, pi]. T and T^-1 give the same canonical motion.
 RigidTransform canonical_motion(const RigidTransform& transform, double slide_tolerance);
 

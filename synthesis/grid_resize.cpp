@@ -38,10 +38,8 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
   return placements;
 }
 
-}  // namespace
-
-TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
-                         double weld_tolerance) {
+// Throws InputError unless `counts` has one count per direction of `grid`, each in its range.
+void check_counts(const GridRule& grid, const std::vector<int>& counts) {
   if (counts.size() != grid.directions.size())
     throw InputError(fmt::format("grid {} has {} direction(s) but {} count(s) were given", grid.name,
                                  grid.directions.size(), counts.size()));
@@ -56,6 +54,13 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
                                                      min_units(grid.directions[i]), min_units(grid.directions[i]) == 1 ? "" : "s")
                                        : ""));
   }
+}
+
+}  // namespace
+
+TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
+                         double weld_tolerance) {
+  check_counts(grid, counts);
   std::vector<std::vector<RigidTransform>> placements;
   std::size_t vertices = 0, triangles = 0;
   for (const GridPiece& piece : pieces) {
@@ -86,6 +91,19 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   }
   resolve_t_junctions(result, weld_tolerance, &seam_vertices);
   return merge_flat_faces(result);
+}
+
+PointCloud resize_grid_points(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
+  check_counts(grid, counts);
+  const bool normals = std::all_of(pieces.begin(), pieces.end(), [](const GridPiece& piece) { return piece.points.has_normals(); });
+  PointCloud result;
+  for (const GridPiece& piece : pieces)
+    for (const RigidTransform& placement : piece_placements(grid, piece, counts)) {
+      for (const Vec3& position : piece.points.positions) result.positions.push_back(placement.apply(position));
+      if (normals)
+        for (const Vec3& normal : piece.points.normals) result.normals.push_back(placement.rotation * normal);
+    }
+  return result;
 }
 
 }  // namespace dg

@@ -26,4 +26,9 @@ inline constexpr double kSeamWeldFraction = 1e-4;
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
                          double weld_tolerance);
 
+/// Assembles the points of a point-cloud grammar's grid pieces for `counts`, each piece placed
+/// as resize_grid places its triangles (normals turned with it when every piece has them; no
+/// welding: points have no seams). Throws as resize_grid.
+PointCloud resize_grid_points(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts);
+
 }  // namespace dg

@@ -3,7 +3,7 @@
 #include "geometry/errors.h"
 #include "grammar/derivation.h"
 #include "grammar/open_lsystem.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/growth_queries.h"
 #include "synthesis/growth_string.h"
 #include "synthesis/segment2d.h"

@@ -1,6 +1,7 @@
 #include "synthesis/r_similarity.h"
 
 #include "geometry/errors.h"
+#include "geometry/surface_sampling.h"
 #include "symmetry/candidates.h"
 #include "synthesis/r_similarity_index.h"
 #include "synthesis/r_similarity_match.h"
@@ -11,7 +12,6 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <random>
 
 namespace dg {
 namespace {
@@ -270,22 +270,10 @@ class Matcher {
 
 // Area-uniform test points on the mesh, from one seeded generator.
 std::vector<SurfacePoint> test_points(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
-  std::vector<double> cumulative;
-  cumulative.reserve(mesh.triangles.size());
-  double total = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) cumulative.push_back(total += mesh.area_vector(t).norm());
+  const PointCloud cloud = sample_surface(mesh, count, seed);
   std::vector<SurfacePoint> points;
-  if (total <= 0.0) return points;
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (std::size_t i = 0; i < count; ++i) {
-    const double pick = uniform(random) * total;
-    const auto t = static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
-    const std::size_t triangle = std::min(t, mesh.triangles.size() - 1);
-    const double s = std::sqrt(uniform(random)), u = uniform(random);
-    const auto [a, b, c] = mesh.corners(triangle);
-    points.push_back({(1.0 - s) * a + s * (1.0 - u) * b + s * u * c, mesh.area_vector(triangle).normalized()});
-  }
+  points.reserve(cloud.positions.size());
+  for (std::size_t i = 0; i < cloud.positions.size(); ++i) points.push_back({cloud.positions[i], cloud.normals[i]});
   return points;
 }
 

@@ -4,7 +4,7 @@
 #include "geometry/flat_faces.h"
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/piece_collision.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "synthesis/turtle.h"
 
 #include "geometry/errors.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/segment2d.h"
 
 #include <algorithm>

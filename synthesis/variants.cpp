@@ -2,7 +2,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/same_surface.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/grid_resize.h"
 
 #include <algorithm>
@@ -90,7 +90,10 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     return variant;
   }
   const GridWithPieces& grid = grammar.grids.front();
-  variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), kSeamWeldFraction * grammar.eps);
+  if (is_point_grammar(grammar))
+    variant.points = resize_grid_points(grid.rule, grid.pieces, plan.grid_counts.front());
+  else
+    variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), kSeamWeldFraction * grammar.eps);
   for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
     variant.changed = variant.changed || plan.grid_counts.front()[i] != grid.rule.directions[i].count;
   return variant;

@@ -34,7 +34,8 @@ struct VariantPlan {
 
 /// A built variant.
 struct Variant {
-  TriangleMesh mesh;
+  TriangleMesh mesh;   ///< empty for a point-cloud grammar
+  PointCloud points;   ///< a point-cloud grammar's variant (grid counts only)
   ShapeDerivation derivation;  ///< context-free variants: what was applied (its mesh is moved to `mesh`)
   /// It differs from the exemplar: other grid counts, or a derivation whose surface is not the
   /// exemplar's (see build_variant).
@@ -47,11 +48,12 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 /// Plans variant `index`. Throws InputError when the grammar has no rules of the requested kind.
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 
-/// Builds the mesh of a planned variant. A context-free derivation that happens to keep every
-/// slot's exemplar production, or whose other productions give the exemplar's surface again
-/// (within eps, see same_surface: another decomposition of the same parts), is drawn again (up
-/// to 8 times, with seeds derived from the plan's), so variants differ from the exemplar whenever
-/// the grammar offers a choice; `changed` says whether the result does.
+/// Builds the mesh (or, for a point-cloud grammar, the points) of a planned variant. A
+/// context-free derivation that happens to keep every slot's exemplar production, or whose other
+/// productions give the exemplar's surface again (within eps, see same_surface: another
+/// decomposition of the same parts), is drawn again (up to 8 times, with seeds derived from the
+/// plan's), so variants differ from the exemplar whenever the grammar offers a choice; `changed`
+/// says whether the result does.
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -2,6 +2,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "geometry/surface_sampling.h"
 
 namespace dg::assets {
 
@@ -28,6 +29,14 @@ void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_pat
   write_mesh(mesh_path, asset.mesh);
   const std::string text = ground_truth_text(asset);
   write_file_atomically(ground_truth_path(mesh_path), [&](std::ostream& out) { out << text; }, false);
+}
+
+void write_asset_points(const Asset& asset, const std::filesystem::path& ply_path, std::size_t count, std::uint64_t seed) {
+  write_point_cloud(ply_path, sample_surface(asset.mesh, count, seed));
+  nlohmann::json truth = asset.ground_truth;
+  truth["sampled_points"] = {{"count", count}, {"seed", seed}};
+  const std::string text = truth.dump(2) + "\n";
+  write_file_atomically(ground_truth_path(ply_path), [&](std::ostream& out) { out << text; }, false);
 }
 
 }  // namespace dg::assets

@@ -8,7 +8,7 @@
 
 #include "geometry/stopwatch.h"
 #include "grammar/lsystem_text.h"
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/growth.h"
 #include "synthesis/guide_edit.h"
 

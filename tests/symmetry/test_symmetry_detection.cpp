@@ -3,7 +3,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
-#include "grammar/random.h"
+#include "geometry/surface_sampling.h"
 #include "support/corpus.h"
 #include "support/shapes.h"
 
@@ -321,19 +321,8 @@ TEST_CASE("corpus: the pinion's rotation family has one step per tooth", "[symme
 TEST_CASE("point cloud sampled from the facade gives the two translations", "[symmetry][cloud]") {
   const dg::TriangleMesh mesh = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
   // Area-uniform random samples (seeded), without normals: a scan-like input.
-  std::vector<double> cumulative;
-  double total = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) cumulative.push_back(total += 0.5 * mesh.area_vector(t).norm());
-  dg::Random random(7);
   dg::Model model;
-  for (int i = 0; i < 400000; ++i) {
-    const double pick = random.uniform() * total;
-    const std::size_t t = std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin();
-    const auto c = mesh.corners(std::min(t, mesh.triangles.size() - 1));
-    double u = random.uniform(), v = random.uniform();
-    if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
-    model.cloud.positions.push_back(c[0] + u * (c[1] - c[0]) + v * (c[2] - c[0]));
-  }
+  model.cloud.positions = dg::sample_surface(mesh, 400000, 7).positions;
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
   const double eps = prepared.surface.eps();
   const dg::SymmetryResult result = dg::detect_symmetries(prepared);

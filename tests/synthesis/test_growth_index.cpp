@@ -1,6 +1,6 @@
 // The uniform segment grid of guided growth against brute force, and the 2D helpers.
 
-#include "grammar/random.h"
+#include "geometry/random.h"
 #include "synthesis/segment2d.h"
 #include "synthesis/segment_grid.h"
 

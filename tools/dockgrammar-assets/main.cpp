@@ -1,6 +1,7 @@
 // dockgrammar-assets: writes the parametric exemplar models with their ground truth.
 //
 //   dockgrammar-assets NAME [--param key=value ...] [--detail K] [--target-triangles N] -o OUT.obj
+//   dockgrammar-assets NAME [--param key=value ...] --points N [--seed S] -o OUT.ply
 //   dockgrammar-assets --list
 //   dockgrammar-assets --all -o DIR
 //
@@ -42,11 +43,16 @@ int run(int argc, char** argv) {
   std::size_t target = 0;
   std::filesystem::path output;
   bool list = false, all = false;
+  std::size_t points = 0;
+  std::uint64_t seed = 1;
   app.add_option("name", name, "model name (see --list)");
   app.add_option("--param", param_items, "model parameter key=value (repeatable)");
   app.add_option("--detail", detail, "tessellation detail K >= 1 (triangles grow with K^2)")->check(CLI::Range(1, 1000));
   app.add_option("--target-triangles", target, "choose the detail that comes closest to N triangles")->check(CLI::PositiveNumber);
   app.add_option("-o,--output", output, "output mesh file (NAME) or folder (--all)");
+  app.add_option("--points", points, "write a point cloud of N points drawn on the surface (PLY) instead of the mesh")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+  app.add_option("--seed", seed, "seed of the drawn points (with --points)")->capture_default_str();
   app.add_flag("--list", list, "print the model names");
   app.add_flag("--all", all, "write the committed small instances into the folder given by -o");
   try {
@@ -64,7 +70,7 @@ int run(int argc, char** argv) {
   }
   if (output.empty()) throw dg::InputError("missing -o (output file, or folder with --all)");
   if (all) {
-    if (!name.empty() || !param_items.empty() || detail != 0 || target != 0) {
+    if (!name.empty() || !param_items.empty() || detail != 0 || target != 0 || points != 0) {
       throw dg::InputError("--all takes only -o DIR");
     }
     std::error_code error;
@@ -82,6 +88,12 @@ int run(int argc, char** argv) {
   nlohmann::json params = parse_params(param_items);
   if (detail != 0) params["detail"] = detail;
   const dg::assets::Asset asset = target == 0 ? dg::assets::make_asset(name, params) : dg::assets::make_asset_with_triangles(name, params, target);
+  if (points != 0) {
+    dg::assets::write_asset_points(asset, output, points, seed);
+    std::cout << fmt::format("{}: {} points drawn on {} triangles -> {} and {}\n", asset.name, points, asset.mesh.triangles.size(),
+                             output.string(), dg::assets::ground_truth_path(output).string());
+    return 0;
+  }
   dg::assets::write_asset_files(asset, output);
   std::cout << fmt::format("{}: {} triangles -> {} and {}\n", asset.name, asset.mesh.triangles.size(), output.string(),
                            dg::assets::ground_truth_path(output).string());

@@ -40,8 +40,6 @@ void add_analyze_command(CLI::App& app) {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
-    if (prepared.model.is_point_cloud())
-      throw InputError(options->model.model_path + ": analyze needs a mesh; point clouds are supported by info and symmetry");
     const SymmetryResult symmetries = detect_symmetries(prepared, {}, progress);
 
     Stopwatch stopwatch;
@@ -53,9 +51,11 @@ void add_analyze_command(CLI::App& app) {
     grammar.eps = prepared.surface.eps();
     grammar.up_axis = model_up_axis(options->model.model_path, options->up);
     grammar.exemplar = prepared.model.mesh;
+    if (prepared.model.is_point_cloud()) grammar.exemplar_points = prepared.model.cloud;
     grammar.materials = prepared.model.materials;
     for (GridRule& rule : find_grids(prepared, symmetries, {}, progress)) {
-      std::vector<GridPiece> pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
+      std::vector<GridPiece> pieces = prepared.model.is_point_cloud() ? cut_grid_points(prepared.model.cloud, rule)
+                                                                      : cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
     grammar_timings.push_back({"grid rules", stopwatch.lap()});

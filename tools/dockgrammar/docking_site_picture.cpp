@@ -4,6 +4,7 @@
 
 #include "geometry/cell_pieces.h"
 #include "geometry/model_io.h"
+#include "geometry/point_splats.h"
 #include "geometry/render_mesh.h"
 
 #include <algorithm>
@@ -54,6 +55,17 @@ bool write_docking_site_picture(const std::filesystem::path& png, const std::fil
     for (std::uint32_t c : site.docker) in_docker[c] = 0;
   }
 
+  if (prepared.model.is_point_cloud()) {  // each point in its cell's colour
+    const PointCloud& cloud = prepared.model.cloud;
+    std::vector<Rgb> point_colors(cloud.positions.size(), Rgb{225, 225, 225});
+    for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+      for (std::uint32_t p : surface.points(c)) point_colors[p] = cell_color[c];
+    std::vector<Rgba8> colors;
+    for (const Rgb& rgb : point_colors) colors.push_back({rgb[0], rgb[1], rgb[2], 255});
+    write_point_cloud(ply, cloud, &point_colors);
+    write_points_picture(png, cloud.positions, colors, kSplatRadius * surface.eps(), picture_options(cloud.bounds(), up_axis));
+    return true;
+  }
   // Triangles whose cells share a colour stay whole; only those across colour borders are cut.
   std::vector<Rgb> palette;
   std::map<Rgb, std::uint32_t> palette_index;
@@ -73,7 +85,7 @@ bool write_docking_site_picture(const std::filesystem::path& png, const std::fil
     for (std::uint32_t v : pieces.triangles[t]) vertex_colors[v] = color;
   }
   write_mesh(ply, pieces, &vertex_colors);
-  MeshRenderOptions options = picture_options(prepared.model.mesh, up_axis);
+  MeshRenderOptions options = picture_options(prepared.model.bounds(), up_axis);
   options.draw_edges = false;  // the cell pieces would outline every voxel
   write_mesh_picture(png, pieces, triangle_colors, {}, options);
   return true;

@@ -15,7 +15,8 @@ namespace dg::cli {
 /// touching D, in a dark shade of that colour, so the sites read as curves around the dockers.
 /// Larger dockers are painted first, so nested sites stay visible; a docker covering more than
 /// half of the model is only outlined (filled, it would hide all the others). `up_axis` as for
-/// picture_options. Writes nothing and returns false when there is no docking site.
+/// picture_options. A point cloud is drawn as splats, each point in its cell's colour, and `ply`
+/// is the coloured cloud. Writes nothing and returns false when there is no docking site.
 bool write_docking_site_picture(const std::filesystem::path& png, const std::filesystem::path& ply,
                                 const PreparedModel& prepared, const DockingSiteResult& docking,
                                 const std::string& up_axis);

@@ -5,6 +5,7 @@
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/point_splats.h"
 #include "geometry/render_mesh.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/model_options.h"
@@ -30,7 +31,7 @@ void add_generate_command(CLI::App& app) {
     std::uint64_t seed = 1;
     std::uint64_t first = 0;
     std::string output;
-    std::string format = "obj";
+    std::string format;
     double range_factor = 2.0;
     std::string rules = "auto";
     int max_depth = 24;
@@ -49,7 +50,8 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--seed", options->seed, "Seed of the batch; variant i depends only on (grammar, seed, i)")->capture_default_str();
   command->add_option("--first", options->first, "Index of the first variant (to split a batch across machines)")->capture_default_str();
   command->add_option("-o,--output", options->output, "Output folder")->required();
-  command->add_option("--format", options->format, "obj, ply or glb")->capture_default_str()->check(CLI::IsMember({"obj", "ply", "glb"}));
+  command->add_option("--format", options->format, "obj, ply or glb (default: obj; ply for a grammar made from a point cloud)")
+      ->check(CLI::IsMember({"obj", "ply", "glb"}));
   command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 100.0));
@@ -76,6 +78,10 @@ void add_generate_command(CLI::App& app) {
   command->callback([options] {
     const auto threads = limit_threads(options->threads);
     const ShapeGrammar grammar = read_grammar(options->grammar);
+    const bool points = is_point_grammar(grammar);
+    const std::string format = !options->format.empty() ? options->format : points ? "ply" : "obj";
+    if (points && format != "ply")
+      throw InputError(options->grammar + ": the grammar was made from a point cloud, so its variants are point clouds: use --format ply");
     const std::filesystem::path folder(options->output);
     create_output_folder(folder);
     VariantOptions variant_options;
@@ -85,7 +91,7 @@ void add_generate_command(CLI::App& app) {
                                                                : VariantRules::automatic;
     variant_options.derivation.max_depth = options->max_depth;
     variant_options.derivation.max_triangles = options->max_triangles;
-    const MeshRenderOptions picture = picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up);
+    const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
     std::size_t limited = 0, rebuilt = 0, unchanged = 0;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
@@ -95,11 +101,15 @@ void add_generate_command(CLI::App& app) {
       const VariantPlan plan = plan_variant(grammar, options->seed, index, variant_options);
       const Variant variant = build_variant(grammar, plan, variant_options);
       const TriangleMesh& mesh = variant.mesh;
-      const std::string file = fmt::format("variant_{:05}.{}", index, options->format);
-      write_mesh_with_materials(folder / file, mesh, grammar.materials);
-      if (options->pictures)
-        write_mesh_picture(folder / fmt::format("variant_{:05}.png", index), mesh, material_colors(mesh, grammar.materials), {},
-                           picture);
+      const std::string file = fmt::format("variant_{:05}.{}", index, format);
+      const std::filesystem::path png = folder / fmt::format("variant_{:05}.png", index);
+      if (points) {
+        write_point_cloud(folder / file, variant.points);
+        if (options->pictures) write_points_picture(png, variant.points.positions, {}, kSplatRadius * grammar.eps, picture);
+      } else {
+        write_mesh_with_materials(folder / file, mesh, grammar.materials);
+        if (options->pictures) write_mesh_picture(png, mesh, material_colors(mesh, grammar.materials), {}, picture);
+      }
       nlohmann::json grids = nlohmann::json::object();
       for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
       const ShapeDerivation& d = variant.derivation;
@@ -120,7 +130,7 @@ void add_generate_command(CLI::App& app) {
                           {"restarts", d.restarts},
                           {"depth_limited", d.depth_limited},
                           {"triangle_limited", d.triangle_limited},
-                          {"triangles", mesh.triangles.size()}});
+                          {points ? "points" : "triangles", points ? variant.points.positions.size() : mesh.triangles.size()}});
       if (progress) fmt::print(stderr, "\r\033[Kvariant {}/{}", n + 1, options->count);
     }
     if (progress) fmt::print(stderr, "\n");

@@ -3,6 +3,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "geometry/point_splats.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
 #include "grammar/seam_curve.h"
@@ -21,6 +22,27 @@ namespace dg::cli {
 namespace {
 
 // What analyze does not build yet (one sentence, for the summary, the JSON and the report).
+// Why a point cloud has no context-free rules.
+constexpr const char* kPointCloudRules =
+    "not built for point clouds (their pieces are cut along seam surfaces through triangles; the grid rules cut "
+    "points, so generate and resize vary the grids)";
+
+// Clouds drawn on the bundled facade gave its whole grid from about this many points per
+// occupied voxel (4.9 and 8.8 did; 4.5 and 2.5 gave part of it).
+constexpr double kDensePointsPerVoxel = 4.8;
+
+// "N points, D per occupied voxel" and, below kDensePointsPerVoxel, a hint to use larger voxels.
+std::string cloud_density_text(const PreparedModel& prepared) {
+  const std::size_t points = prepared.model.cloud.positions.size(), voxels = prepared.surface.cell_count();
+  const double density = voxels == 0 ? 0.0 : static_cast<double>(points) / static_cast<double>(voxels);
+  std::string text = fmt::format("{} points, {:.1f} per occupied voxel", points, density);
+  if (density < kDensePointsPerVoxel)
+    text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 4.9 points per voxel and more, part of "
+            "it at 4.5 and 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for "
+            "twice r)";
+  return text;
+}
+
 std::string missing_text() {
   return fmt::format("grids of pure rotations (no slide along the axis) are not built; grid planes cross the whole model "
                      "but for separate parts kept whole, so a repetition that connected geometry not repeating with it "
@@ -179,7 +201,7 @@ nlohmann::json productions_json(const ContextFreeGrammar& g) {
 // Which rules `generate` uses by default (upright orientation about the grammar's up axis).
 std::string generate_rules_text(const AnalysisReport& report) {
   ShapeDerivationOptions upright;
-  upright.up = picture_options(report.grammar.exemplar, report.grammar.up_axis).camera.up.normalized();
+  upright.up = picture_options(exemplar_bounds(report.grammar), report.grammar.up_axis).camera.up.normalized();
   if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
   if (!derivation_has_choice(report.grammar.context_free, ShapeDerivationOptions{}))
     return std::string("no non-terminal has a second production of another shape (its locations are copies of one "
@@ -208,6 +230,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
                                                  "them: insert green, delete red, replace blue, slippable grey; a docker "
                                                  "covering more than half the model is only outlined).",
                                                  model_stem(report)));
+  if (report.context_free.point_cloud) return md + fmt::format("Context-free rules: {}.\n\n", kPointCloudRules);
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
@@ -271,7 +294,11 @@ std::string materials_hint(const PreparedModel& prepared, std::string_view quote
 std::string analysis_text(const AnalysisReport& report) {
   std::string out = fmt::format("model {}: r = {:.6g}, eps = {:.6g}\n", report.prepared.model.source_path,
                                 report.prepared.surface.r(), report.prepared.surface.eps());
-  out += fmt::format("symmetries: {} in {} families\n", report.symmetries.symmetries.size(), report.symmetries.families.size());
+  if (report.prepared.model.is_point_cloud()) out += fmt::format("point cloud: {}\n", cloud_density_text(report.prepared));
+  if (report.symmetries.symmetries.empty())
+    out += fmt::format("symmetries: none ({})\n", report.symmetries.note);
+  else
+    out += fmt::format("symmetries: {} in {} families\n", report.symmetries.symmetries.size(), report.symmetries.families.size());
   if (report.grammar.grids.empty()) out += fmt::format("grids: none found{}\n", materials_hint(report.prepared));
   for (const GridWithPieces& grid : report.grammar.grids) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
@@ -285,7 +312,9 @@ std::string analysis_text(const AnalysisReport& report) {
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
                      ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
-  if (cf.empty())
+  if (report.context_free.point_cloud)
+    out += fmt::format("context-free rules: {}\n", kPointCloudRules);
+  else if (cf.empty())
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit,
                        unpaired_sites_text(report) + dropped_rules_text(report.context_free));
@@ -319,7 +348,10 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
       kept_whole.push_back({{"head", parts_among(d.whole_in_head, report.prepared.model.mesh)},
                             {"tail", parts_among(d.whole_in_tail, report.prepared.model.mesh)}});
     }
-    for (const GridPiece& p : grid.pieces) pieces.push_back({{"name", piece_name(p.classes)}, {"triangles", p.mesh.triangles.size()}});
+    for (const GridPiece& p : grid.pieces)
+      pieces.push_back(report.prepared.model.is_point_cloud()
+                           ? nlohmann::json{{"name", piece_name(p.classes)}, {"points", p.points.positions.size()}}
+                           : nlohmann::json{{"name", piece_name(p.classes)}, {"triangles", p.mesh.triangles.size()}});
     grids.push_back({{"name", grid.rule.name},
                      {"dims", grid.rule.directions.size()},
                      {"counts", counts},
@@ -354,10 +386,17 @@ void write_analysis_report(const AnalysisReport& report) {
   const PreparedModel& prepared = report.prepared;
   const CleaningReport& c = prepared.cleaning;
   std::string md = fmt::format("# Analysis of {}\n\n", prepared.model.source_path);
-  md += fmt::format("r = {:.6g}, eps = {:.6g} (model units). {} vertices, {} triangles ({} degenerate dropped, {} duplicated), "
-                    "{} boundary and {} non-manifold edges, {} components; {} open edges split at T-junctions for the analysis.\n\n",
-                    prepared.surface.r(), prepared.surface.eps(), c.vertices, c.triangles, c.degenerate_dropped,
-                    c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
+  if (prepared.model.is_point_cloud())
+    md += fmt::format("r = {:.6g}, eps = {:.6g} (model units). A point cloud: {} ({} exact repeats and {} with invalid "
+                      "normals dropped).\n\n",
+                      prepared.surface.r(), prepared.surface.eps(), cloud_density_text(prepared), c.duplicate_points_dropped,
+                      c.invalid_normals_dropped);
+  else
+    md += fmt::format("r = {:.6g}, eps = {:.6g} (model units). {} vertices, {} triangles ({} degenerate dropped, {} duplicated), "
+                      "{} boundary and {} non-manifold edges, {} components; {} open edges split at T-junctions for the "
+                      "analysis.\n\n",
+                      prepared.surface.r(), prepared.surface.eps(), c.vertices, c.triangles, c.degenerate_dropped,
+                      c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
   md += materials_paragraph(prepared);
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
@@ -391,7 +430,10 @@ void write_analysis_report(const AnalysisReport& report) {
             "tail keep their place at the end. Counts below {} would bring a part within r of the other side.\n",
             parts, grid.rule.min_count);
     md += "\nPieces (class per direction: 1 = head, placed once; 2 = repeated unit; 3 = tail, placed after the last unit):\n\n";
-    for (const GridPiece& p : grid.pieces) md += fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
+    for (const GridPiece& p : grid.pieces)
+      md += report.prepared.model.is_point_cloud()
+                ? fmt::format("- {}: {} points\n", piece_name(p.classes), p.points.positions.size())
+                : fmt::format("- {}: {} triangles\n", piece_name(p.classes), p.mesh.triangles.size());
     std::string ranges;
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
       ranges += fmt::format("{}direction {}: {}..{}", i == 0 ? "" : ", ", i + 1, lowest_count(grid.rule, i), grid.rule.max_count);
@@ -405,6 +447,22 @@ void write_analysis_report(const AnalysisReport& report) {
 }
 
 namespace {
+
+// Colour of what lies in `slabs` (one per direction) in a grid picture: the piece class per
+// direction as stored in the grammar; later units (copies) shade like the unit, alternately
+// darker so the repeats can be counted.
+Rgba8 grid_piece_color(const GridRule& grid, const std::vector<std::size_t>& slabs) {
+  std::size_t class_index = 0, parity = 0;
+  for (std::size_t i = 0; i < grid.directions.size(); ++i) {
+    const int cls = slab_class(slabs[i], grid.directions[i]);
+    class_index = 3 * class_index + static_cast<std::size_t>(cls < 0 ? 1 : cls);
+    if (cls != 0 && cls != 2) parity += slabs[i];
+  }
+  const Rgba8 color = class_color(class_index);
+  if (parity % 2 == 0) return color;
+  return {static_cast<std::uint8_t>(color.r * 3 / 4), static_cast<std::uint8_t>(color.g * 3 / 4),
+          static_cast<std::uint8_t>(color.b * 3 / 4), 255};
+}
 
 // NAME.rules.png/.ply: the exemplar rebuilt from its own productions, each piece coloured by
 // the non-terminal it fills (the axiom's terminal light grey), like the paper's Figure 8.
@@ -425,7 +483,7 @@ std::optional<std::filesystem::path> write_rules_picture(const std::filesystem::
   }
   write_mesh(folder / (stem + ".rules.ply"), d.mesh, &vertex_colors);
   write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {},
-                     picture_options(report.prepared.model.mesh, report.grammar.up_axis));
+                     picture_options(report.prepared.model.bounds(), report.grammar.up_axis));
   return folder / (stem + ".rules.png");
 }
 
@@ -435,31 +493,38 @@ std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem
                                                            const AnalysisReport& report) {
   std::vector<std::filesystem::path> written;
   const TriangleMesh& mesh = report.prepared.model.mesh;
+  const PointCloud& cloud = report.prepared.model.cloud;
+  const bool points = report.prepared.model.is_point_cloud();
   for (const GridWithPieces& grid : report.grammar.grids) {
+    const std::filesystem::path png = folder / (stem + "." + grid.rule.name + ".png"),
+                                ply = folder / (stem + "." + grid.rule.name + ".ply");
+    if (points) {
+      std::vector<Rgba8> colors;
+      std::vector<Rgb> point_colors;
+      for (const Vec3& p : cloud.positions) {
+        std::vector<std::size_t> slabs;
+        for (const GridDirection& d : grid.rule.directions) slabs.push_back(slab_of_point(d, p));
+        const Rgba8 color = grid_piece_color(grid.rule, slabs);
+        colors.push_back(color);
+        point_colors.push_back({color.r, color.g, color.b});
+      }
+      write_point_cloud(ply, cloud, &point_colors);
+      write_points_picture(png, cloud.positions, colors, kSplatRadius * report.grammar.eps,
+                           picture_options(cloud.bounds(), report.grammar.up_axis));
+      written.push_back(png);
+      continue;
+    }
     const GridCut grid_cut = cut_along_grid(mesh, grid.rule, report.grammar.eps);
     const TriangleMesh& cut = grid_cut.mesh;
     std::vector<Rgba8> colors(cut.triangles.size());
     std::vector<Rgb> vertex_colors(cut.positions.size());
     for (std::size_t t = 0; t < cut.triangles.size(); ++t) {
-      // Class per direction as stored in the grammar; later units (copies) shade like the unit,
-      // alternately darker so the repeats can be counted.
-      std::size_t class_index = 0, parity = 0;
-      for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-        const std::size_t slab = grid_cut.slabs[t][i];
-        const int cls = slab_class(slab, grid.rule.directions[i]);
-        class_index = 3 * class_index + static_cast<std::size_t>(cls < 0 ? 1 : cls);
-        if (cls != 0 && cls != 2) parity += slab;
-      }
-      Rgba8 color = class_color(class_index);
-      if (parity % 2 == 1) color = {static_cast<std::uint8_t>(color.r * 3 / 4), static_cast<std::uint8_t>(color.g * 3 / 4),
-                                    static_cast<std::uint8_t>(color.b * 3 / 4), 255};
-      colors[t] = color;
-      for (std::uint32_t v : cut.triangles[t]) vertex_colors[v] = {color.r, color.g, color.b};
+      colors[t] = grid_piece_color(grid.rule, grid_cut.slabs[t]);
+      for (std::uint32_t v : cut.triangles[t]) vertex_colors[v] = {colors[t].r, colors[t].g, colors[t].b};
     }
-    write_mesh(folder / (stem + "." + grid.rule.name + ".ply"), cut, &vertex_colors);
-    write_mesh_picture(folder / (stem + "." + grid.rule.name + ".png"), cut, colors, {},
-                       picture_options(mesh, report.grammar.up_axis));
-    written.push_back(folder / (stem + "." + grid.rule.name + ".png"));
+    write_mesh(ply, cut, &vertex_colors);
+    write_mesh_picture(png, cut, colors, {}, picture_options(mesh.bounds(), report.grammar.up_axis));
+    written.push_back(png);
   }
   if (const auto rules = write_rules_picture(folder, stem, report)) written.push_back(*rules);
   if (write_docking_site_picture(folder / (stem + ".sites.png"), folder / (stem + ".sites.ply"), report.prepared,

@@ -22,7 +22,7 @@ std::string model_up_axis(const std::string& model_path, const std::string& give
   return extension == ".gltf" || extension == ".glb" ? "y" : "";
 }
 
-MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis) {
+MeshRenderOptions picture_options(const BoundingBox& bounds, const std::string& axis) {
   MeshRenderOptions options;
   if (axis == "x") {
     options.camera.up = Vec3(1, 0, 0);
@@ -31,7 +31,7 @@ MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& a
   } else if (axis == "z") {
     options.camera.up = Vec3(0, 0, 1);
   } else if (axis.empty()) {
-    const Vec3 size = mesh.bounds().size();
+    const Vec3 size = bounds.size();
     if (size.y() < kWallThinness * std::min(size.x(), size.z())) options.camera.up = Vec3(0, 0, 1);
   } else {
     throw InputError("up axis '" + axis + "': expected x, y or z");

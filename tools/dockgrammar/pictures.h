@@ -29,9 +29,9 @@ std::string model_up_axis(const std::string& model_path, const std::string& give
 inline constexpr double kWallThinness = 0.35;
 
 /// Render options with the model's up axis: `axis` "x", "y" or "z" as given to --up, or empty
-/// to guess from the model: z when it is a thin wall in the x-z plane (see kWallThinness), y
+/// to guess from the model's bounds: z when it is a thin wall in the x-z plane (see kWallThinness), y
 /// otherwise (the common OBJ/glTF convention).
-MeshRenderOptions picture_options(const TriangleMesh& mesh, const std::string& axis);
+MeshRenderOptions picture_options(const BoundingBox& bounds, const std::string& axis);
 
 /// A distinct, readable colour for class i (cycled).
 Rgba8 class_color(std::size_t i);

@@ -4,6 +4,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/point_splats.h"
 #include "grammar/grammar_file.h"
 #include "synthesis/grid_resize.h"
 #include "tools/dockgrammar/output_folder.h"
@@ -52,7 +53,7 @@ void add_resize_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
   command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction), repeatable")->required();
-  command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb")->required();
+  command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb (.ply for a grammar made from a point cloud)")->required();
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
   command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
@@ -75,14 +76,25 @@ void add_resize_command(CLI::App& app) {
     if (grammar.grids.size() > 1)
       throw InputError(options->grammar + ": resizing grammars with several grids is not supported yet");
     const GridWithPieces& grid = grammar.grids.front();
-    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, requested.at(grid.rule.name),
-                                            kSeamWeldFraction * grammar.eps);
-    create_output_folder(std::filesystem::path(options->output).parent_path());
-    write_mesh_with_materials(options->output, result, grammar.materials);
+    const std::vector<int>& counts = requested.at(grid.rule.name);
+    const std::filesystem::path output(options->output);
+    const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
+    if (is_point_grammar(grammar)) {
+      const PointCloud result = resize_grid_points(grid.rule, grid.pieces, counts);
+      create_output_folder(output.parent_path());
+      write_point_cloud(output, result);  // rejects outputs other than .ply
+      if (options->picture)
+        write_points_picture(std::filesystem::path(output).replace_extension(".png"), result.positions, {},
+                             kSplatRadius * grammar.eps, picture);
+      if (!options->quiet) fmt::print(stderr, "wrote {} ({} points)\n", options->output, result.positions.size());
+      return;
+    }
+    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, counts, kSeamWeldFraction * grammar.eps);
+    create_output_folder(output.parent_path());
+    write_mesh_with_materials(output, result, grammar.materials);
     if (options->picture)
-      write_mesh_picture(std::filesystem::path(options->output).replace_extension(".png"), result,
-                         material_colors(result, grammar.materials), {},
-                         picture_options(grammar.exemplar, options->up.empty() ? grammar.up_axis : options->up));
+      write_mesh_picture(std::filesystem::path(output).replace_extension(".png"), result, material_colors(result, grammar.materials),
+                         {}, picture);
     if (!options->quiet) fmt::print(stderr, "wrote {} ({} triangles)\n", options->output, result.triangles.size());
   });
 }

@@ -146,7 +146,7 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
       triangle_colors[t] = {color[0], color[1], color[2], 255};
     }
     write_mesh(folder / fmt::format("symmetry_{:02}.ply", i + 1), pieces, &colors);
-    MeshRenderOptions options = picture_options(prepared.model.mesh, up_axis);
+    MeshRenderOptions options = picture_options(prepared.model.bounds(), up_axis);
     options.draw_edges = false;  // the cell pieces would outline every voxel
     write_mesh_picture(folder / fmt::format("symmetry_{:02}.png", i + 1), pieces, triangle_colors, {}, options);
   }

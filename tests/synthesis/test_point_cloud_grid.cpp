@@ -1,0 +1,171 @@
+// Grids of point clouds: a scan-like cloud drawn on a generated facade gives the facade's grid,
+// and its resized points lie on (and cover) the generator's larger facade.
+
+#include "synthesis/grid_resize.h"
+
+#include "assets/generator/asset.h"
+#include "geometry/model_io.h"
+#include "geometry/surface_sampling.h"
+#include "grammar/docking_sites.h"
+#include "grammar/grammar_file.h"
+#include "support/cli_run.h"
+#include "support/mesh_distance.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <set>
+
+using dg::Vec3;
+
+namespace {
+
+dg::TriangleMesh facade(int columns, int rows) {
+  return dg::assets::make_asset("facade", {{"columns", columns}, {"rows", rows}}).mesh;
+}
+
+// Count per direction of `grid` for the facade's columns (along x) and rows (along z).
+std::vector<int> facade_counts(const dg::GridRule& grid, int columns, int rows) {
+  std::vector<int> counts;
+  for (const dg::GridDirection& d : grid.directions) counts.push_back(std::abs(d.direction.x()) > 0.99 ? columns : rows);
+  return counts;
+}
+
+// Fraction of `samples` with a point of `cloud` in their voxel of size `cell` or a neighbour.
+double covered_fraction(const std::vector<Vec3>& samples, const std::vector<Vec3>& cloud, double cell) {
+  std::set<std::array<long, 3>> occupied;
+  auto voxel = [&](const Vec3& p) {
+    return std::array<long, 3>{std::lround(std::floor(p.x() / cell)), std::lround(std::floor(p.y() / cell)),
+                               std::lround(std::floor(p.z() / cell))};
+  };
+  for (const Vec3& p : cloud) occupied.insert(voxel(p));
+  std::size_t covered = 0;
+  for (const Vec3& s : samples) {
+    const auto v = voxel(s);
+    bool found = false;
+    for (long dx = -1; dx <= 1 && !found; ++dx)
+      for (long dy = -1; dy <= 1 && !found; ++dy)
+        for (long dz = -1; dz <= 1 && !found; ++dz) found = occupied.count({v[0] + dx, v[1] + dy, v[2] + dz}) > 0;
+    covered += found ? 1 : 0;
+  }
+  return static_cast<double>(covered) / static_cast<double>(samples.size());
+}
+
+}  // namespace
+
+TEST_CASE("a point cloud drawn on the facade gives its 2-grid and resized points form the larger facade",
+          "[synthesis][grid][cloud]") {
+  const dg::TriangleMesh exemplar = facade(3, 4);
+  dg::Model model;
+  model.cloud.positions = dg::sample_surface(exemplar, 800000, 1).positions;  // no normals: scan-like
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const double eps = prepared.surface.eps();
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(grids.size() == 1);
+  const dg::GridRule& grid = grids[0];
+  REQUIRE(grid.directions.size() == 2);
+  // The generator's counts and pitches (3 columns, 4 rows, 3 m apart), as the mesh gives them.
+  CHECK(grid.directions[0].count == facade_counts(grid, 3, 4)[0]);
+  CHECK(grid.directions[1].count == facade_counts(grid, 3, 4)[1]);
+  for (const dg::GridDirection& d : grid.directions) CHECK(d.pitch == Approx(3.0).margin(0.01 * eps));
+
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_points(prepared.model.cloud, grid);
+  std::size_t stored = 0;
+  for (const dg::GridPiece& piece : pieces) {
+    CHECK(piece.mesh.triangles.empty());
+    CHECK(!piece.points.positions.empty());
+    stored += piece.points.positions.size();
+  }
+  // Copies of the repeated unit are not stored: the pieces hold fewer points than the cloud.
+  CHECK(stored < prepared.model.cloud.positions.size());
+
+  const std::vector<Vec3> truth_samples = dg::sample_surface(facade(5, 7), 20000, 2).positions;
+  for (const auto& [columns, rows] : {std::pair{3, 4}, std::pair{5, 7}}) {
+    INFO(columns << " x " << rows);
+    const dg::PointCloud resized = dg::resize_grid_points(grid, pieces, facade_counts(grid, columns, rows));
+    const dg::TriangleMesh truth = facade(columns, rows);
+    // Every point on the generator's facade of that size, and that facade covered by points.
+    dg::TriangleMesh points_only;
+    points_only.positions = resized.positions;
+    CHECK(dg::test::one_sided_distance(points_only, truth) < 0.1 * eps);
+    const std::vector<Vec3> samples = dg::sample_surface(truth, 20000, 2).positions;
+    CHECK(covered_fraction(samples, resized.positions, eps) > 0.999);
+  }
+  // The exemplar-sized result is not a cover of the larger facade (the check can fail).
+  const dg::PointCloud small = dg::resize_grid_points(grid, pieces, facade_counts(grid, 3, 4));
+  CHECK(covered_fraction(truth_samples, small.positions, eps) < 0.8);
+}
+
+TEST_CASE("docking sites of a point cloud come from its symmetries", "[grammar][cloud]") {
+  dg::Model model;
+  model.cloud.positions = dg::sample_surface(facade(2, 3), 400000, 3).positions;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  REQUIRE(!symmetries.symmetries.empty());
+  const dg::DockingSiteResult docking = dg::find_docking_sites(prepared, symmetries);
+  CHECK(docking.stats.motions > 0);
+  CHECK(!docking.sites.empty());
+  for (const dg::DockingSite& site : docking.sites) {
+    CHECK(!site.docker.empty());
+    CHECK(!site.site.empty());
+  }
+}
+
+TEST_CASE("analyze resize and generate on a point-cloud file", "[tools][cloud]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-point-cloud-test");
+  const std::filesystem::path cloud = folder / "facade_points.ply";
+  dg::write_point_cloud(cloud, dg::sample_surface(facade(2, 3), 400000, 3));
+  const dg::test::CliRun analyzed = dg::test::run_cli("analyze " + cloud.string() + " -q --json -o " + (folder / "out").string(), folder);
+  REQUIRE(analyzed.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(analyzed.output.substr(analyzed.output.find('{')));
+  REQUIRE(summary["grids"].size() == 1);
+  CHECK(summary["grids"][0]["dims"] == 2);
+  CHECK(summary["grids"][0]["pieces"][0].contains("points"));
+  CHECK(summary["productions"].empty());
+  CHECK(summary["dockers"].get<int>() > 0);
+  const std::filesystem::path grammar_path = folder / "out" / "facade_points.grammar.json";
+  std::ifstream grammar_file(grammar_path);
+  const nlohmann::json grammar_json = nlohmann::json::parse(grammar_file);
+  CHECK(grammar_json["surface"] == "points");
+  CHECK(grammar_json["version"] == dg::kGrammarFileVersion);
+  const dg::ShapeGrammar grammar = dg::read_grammar(grammar_path);
+  CHECK(dg::is_point_grammar(grammar));
+  CHECK(grammar.exemplar_points.positions.size() == 400000);
+  for (const std::string picture : {"facade_points.grid1.png", "facade_points.sites.png"})
+    CHECK(std::filesystem::exists(folder / "out" / picture));
+  nlohmann::json unknown_surface = grammar_json;
+  unknown_surface["surface"] = "voxels";
+  std::ofstream(folder / "out" / "unknown.grammar.json") << unknown_surface.dump();
+  CHECK_THROWS_WITH(dg::read_grammar(folder / "out" / "unknown.grammar.json"), Catch::Contains("\"surface\" must be"));
+
+  // Resize: counts + 1 in each direction give a point cloud with more points.
+  const std::vector<int> counts = summary["grids"][0]["counts"].get<std::vector<int>>();
+  const std::string grid = "grid1=" + std::to_string(counts[0] + 1) + "x" + std::to_string(counts[1] + 1);
+  const dg::test::CliRun resized = dg::test::run_cli(
+      "resize " + grammar_path.string() + " -q --picture --grid " + grid + " -o " + (folder / "bigger.ply").string(), folder);
+  REQUIRE(resized.status == 0);
+  const dg::Model bigger = dg::read_model(folder / "bigger.ply");
+  CHECK(bigger.is_point_cloud());
+  CHECK(bigger.cloud.positions.size() > grammar.exemplar_points.positions.size());
+  CHECK(std::filesystem::exists(folder / "bigger.png"));
+  const dg::test::CliRun as_obj =
+      dg::test::run_cli("resize " + grammar_path.string() + " -q --grid " + grid + " -o " + (folder / "bigger.obj").string(), folder);
+  CHECK(as_obj.status == 2);
+  CHECK(as_obj.output.find("point clouds are written as .ply only") != std::string::npos);
+
+  // Generate: point clouds by default, an OBJ request is refused.
+  const dg::test::CliRun generated =
+      dg::test::run_cli("generate " + grammar_path.string() + " -q --count 2 -o " + (folder / "variants").string(), folder);
+  REQUIRE(generated.status == 0);
+  CHECK(dg::read_model(folder / "variants" / "variant_00000.ply").is_point_cloud());
+  std::ifstream manifest_file(folder / "variants" / "manifest.json");
+  const nlohmann::json manifest = nlohmann::json::parse(manifest_file);
+  CHECK(manifest["variants"][1]["points"].get<std::size_t>() > 0);
+  const dg::test::CliRun obj_variants = dg::test::run_cli(
+      "generate " + grammar_path.string() + " -q --count 1 --format obj -o " + (folder / "obj").string(), folder);
+  CHECK(obj_variants.status == 2);
+  CHECK(obj_variants.output.find("use --format ply") != std::string::npos);
+  std::filesystem::remove_all(folder);
+}
