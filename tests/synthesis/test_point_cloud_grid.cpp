@@ -113,7 +113,7 @@ TEST_CASE("docking sites of a point cloud come from its symmetries", "[grammar][
   }
 }
 
-TEST_CASE("analyze resize and generate on a point-cloud file", "[tools][cloud]") {
+TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools][cloud]") {
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-point-cloud-test");
   const std::filesystem::path cloud = folder / "facade_points.ply";
   dg::write_point_cloud(cloud, dg::sample_surface(facade(2, 3), 400000, 3));
@@ -139,6 +139,13 @@ TEST_CASE("analyze resize and generate on a point-cloud file", "[tools][cloud]")
   unknown_surface["surface"] = "voxels";
   std::ofstream(folder / "out" / "unknown.grammar.json") << unknown_surface.dump();
   CHECK_THROWS_WITH(dg::read_grammar(folder / "out" / "unknown.grammar.json"), Catch::Contains("\"surface\" must be"));
+
+  // Symmetry pictures colour the points by their cells.
+  const dg::test::CliRun pictured =
+      dg::test::run_cli("symmetry " + cloud.string() + " -q --top 1 -o " + (folder / "symmetry").string(), folder);
+  CHECK(pictured.status == 0);
+  CHECK(std::filesystem::exists(folder / "symmetry" / "symmetry_01.png"));
+  CHECK(dg::read_model(folder / "symmetry" / "symmetry_01.ply").cloud.positions.size() == 400000);
 
   // Resize: counts + 1 in each direction give a point cloud with more points.
   const std::vector<int> counts = summary["grids"][0]["counts"].get<std::vector<int>>();

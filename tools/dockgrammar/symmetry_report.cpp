@@ -1,8 +1,8 @@
 #include "tools/dockgrammar/symmetry_report.h"
 
 #include "geometry/cell_pieces.h"
-#include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/point_splats.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
@@ -117,13 +117,18 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
 
 void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
                              const SymmetryResult& result, std::size_t top, const std::string& up_axis) {
-  if (prepared.model.is_point_cloud()) throw InputError("-o pictures are made for meshes only (this model is a point cloud)");
   create_output_folder(folder);
   const VoxelSurface& surface = prepared.surface;
   const CellMatcher matcher(surface, nullptr);
+  enum : std::uint8_t { grey = 0, pink = 1, red = 2, blue = 4 };
+  auto color_of = [](std::uint32_t state) {
+    if (state & blue) return (state & red) ? Rgb{150, 60, 200} : Rgb{40, 90, 220};
+    if (state & red) return Rgb{220, 40, 40};
+    if (state & pink) return Rgb{240, 160, 160};
+    return Rgb{170, 170, 170};
+  };
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
     const DetectedSymmetry& s = result.symmetries[i];
-    enum : std::uint8_t { grey = 0, pink = 1, red = 2, blue = 4 };
     std::vector<std::uint32_t> state(surface.cell_count(), grey);
     for (std::uint32_t c : s.region.symmetric_cells) state[c] = pink;
     for (std::uint32_t c : s.region.r_symmetric_cells) state[c] = red;
@@ -131,24 +136,33 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
     matcher.image_of_cells(s.region.r_symmetric_cells, s.transform, image);
     for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
       if (image[c]) state[c] |= blue;
+    const std::filesystem::path ply = folder / fmt::format("symmetry_{:02}.ply", i + 1),
+                                png = folder / fmt::format("symmetry_{:02}.png", i + 1);
+    MeshRenderOptions options = picture_options(prepared.model.bounds(), up_axis);
+    if (prepared.model.is_point_cloud()) {  // each point in its cell's colour
+      const PointCloud& cloud = prepared.model.cloud;
+      std::vector<Rgb> point_colors(cloud.positions.size(), color_of(grey));
+      for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+        for (std::uint32_t p : surface.points(c)) point_colors[p] = color_of(state[c]);
+      std::vector<Rgba8> colors;
+      for (const Rgb& rgb : point_colors) colors.push_back({rgb[0], rgb[1], rgb[2], 255});
+      write_point_cloud(ply, cloud, &point_colors);
+      write_points_picture(png, cloud.positions, colors, kSplatRadius * surface.eps(), options);
+      continue;
+    }
     // Triangles whose cells share a state stay whole; only those across state borders are cut.
     std::vector<std::uint32_t> piece_states;
     const TriangleMesh pieces = cut_where_cell_keys_differ(prepared.model.mesh, surface, state, piece_states);
     std::vector<Rgb> colors(pieces.positions.size());
     std::vector<Rgba8> triangle_colors(pieces.triangles.size());
     for (std::size_t t = 0; t < pieces.triangles.size(); ++t) {
-      const std::uint32_t st = piece_states[t];
-      Rgb color{170, 170, 170};
-      if (st & blue) color = (st & red) ? Rgb{150, 60, 200} : Rgb{40, 90, 220};
-      else if (st & red) color = Rgb{220, 40, 40};
-      else if (st & pink) color = Rgb{240, 160, 160};
+      const Rgb color = color_of(piece_states[t]);
       for (std::uint32_t v : pieces.triangles[t]) colors[v] = color;
       triangle_colors[t] = {color[0], color[1], color[2], 255};
     }
-    write_mesh(folder / fmt::format("symmetry_{:02}.ply", i + 1), pieces, &colors);
-    MeshRenderOptions options = picture_options(prepared.model.bounds(), up_axis);
+    write_mesh(ply, pieces, &colors);
     options.draw_edges = false;  // the cell pieces would outline every voxel
-    write_mesh_picture(folder / fmt::format("symmetry_{:02}.png", i + 1), pieces, triangle_colors, {}, options);
+    write_mesh_picture(png, pieces, triangle_colors, {}, options);
   }
 }
 

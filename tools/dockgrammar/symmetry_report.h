@@ -26,8 +26,9 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top);
 
 /// Writes DIR/symmetry_NN.ply (vertex colours) and DIR/symmetry_NN.png for the first `top`
 /// symmetries: r-symmetric area red, symmetric but within r of its border pink, the image of
-/// the r-symmetric area under T blue (violet where both), the rest grey. `up_axis` is "x", "y",
-/// "z" or empty (guessed), as picture_options takes it.
+/// the r-symmetric area under T blue (violet where both), the rest grey; a point cloud's points
+/// take their cell's colour (drawn as splats; the PLY is the coloured cloud). `up_axis` is "x",
+/// "y", "z" or empty (guessed), as picture_options takes it.
 void write_symmetry_pictures(const std::filesystem::path& folder, const PreparedModel& prepared,
                              const SymmetryResult& result, std::size_t top, const std::string& up_axis);
 
