@@ -234,6 +234,36 @@ SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface&
       state[c] = yes;
       queue.push_back(c);
     }
+    // Small clusters of failed (or, enclosed by them, untested) cells with symmetric cells all
+    // around: scan noise too, at most the cells of a disk of diameter r.
+    const double radius_cells = 0.5 * surface.r() / surface.eps();
+    const auto max_cluster = static_cast<std::size_t>(std::ceil(std::numbers::pi * radius_cells * radius_cells));
+    enum : std::uint8_t { open, in_cluster, large };  // a large cluster's cells stop later searches
+    std::vector<std::uint8_t> visited(surface.cell_count(), open);
+    std::vector<std::uint32_t> cluster;
+    for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+      if (state[c] != no || visited[c] != open) continue;
+      cluster.assign(1, c);
+      visited[c] = in_cluster;
+      bool too_large = false;
+      for (std::size_t head = 0; head < cluster.size() && !too_large && cluster.size() <= max_cluster; ++head)
+        for (std::uint32_t n : surface.neighbours(cluster[head])) {
+          if (state[n] == yes) continue;
+          if (visited[n] == large) too_large = true;
+          if (visited[n] != open) continue;
+          visited[n] = in_cluster;
+          cluster.push_back(n);
+        }
+      too_large = too_large || cluster.size() > max_cluster;
+      if (too_large) {
+        for (std::uint32_t k : cluster) visited[k] = large;
+        continue;
+      }
+      for (std::uint32_t k : cluster) {
+        state[k] = yes;
+        queue.push_back(k);
+      }
+    }
   }
   std::sort(queue.begin(), queue.end());
   region.symmetric_cells = std::move(queue);

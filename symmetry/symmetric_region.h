@@ -83,7 +83,9 @@ struct SymmetricRegion {
 /// not connected to a seed through symmetric cells are not found), then erodes it: a cell stays
 /// in xi_r(T) when its intrinsic distance to the nearest non-symmetric cell exceeds r.
 /// Point clouds (`fill_outliers`): a failed cell whose neighbours are mostly symmetric counts
-/// as symmetric (isolated outliers inside symmetric area). Early rejection: when fewer than a
+/// as symmetric (isolated outliers inside symmetric area), and so does a cluster of failed cells
+/// (with the untested cells they enclose) that symmetric cells surround, when it has at most
+/// the cells of a disk of diameter r (pi (r / 2 eps)^2). Early rejection: when fewer than a
 /// quarter of the seeds are symmetric, the candidate is bad and the region is returned empty
 /// without growing.
 SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,

@@ -28,8 +28,8 @@ constexpr const char* kPointCloudRules =
     "points, so generate and resize vary the grids)";
 
 // Clouds drawn on the bundled facade gave its whole grid from about this many points per
-// occupied voxel (4.9 and 8.8 did; 4.5 and 2.5 gave part of it).
-constexpr double kDensePointsPerVoxel = 4.8;
+// occupied voxel (3.0 to 8.8 did; 2.5 gave part of it).
+constexpr double kDensePointsPerVoxel = 3.0;
 
 // "N points, D per occupied voxel" and, below kDensePointsPerVoxel, a hint to use larger voxels.
 std::string cloud_density_text(const PreparedModel& prepared) {
@@ -37,9 +37,8 @@ std::string cloud_density_text(const PreparedModel& prepared) {
   const double density = voxels == 0 ? 0.0 : static_cast<double>(points) / static_cast<double>(voxels);
   std::string text = fmt::format("{} points, {:.1f} per occupied voxel", points, density);
   if (density < kDensePointsPerVoxel)
-    text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 4.9 points per voxel and more, part of "
-            "it at 4.5 and 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for "
-            "twice r)";
+    text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 3 points per voxel and more, part of it "
+            "at 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for twice r)";
   return text;
 }
 
