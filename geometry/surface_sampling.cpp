@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace dg {
 
@@ -28,6 +29,17 @@ PointCloud sample_surface(const TriangleMesh& mesh, std::size_t count, std::uint
     cloud.normals.push_back(mesh.area_vector(triangle).normalized());
   }
   return cloud;
+}
+
+void add_noise(PointCloud& cloud, double sigma, std::uint64_t seed) {
+  Random random(seed);
+  // Box-Muller: two uniform numbers give one standard normal number.
+  auto normal = [&] {
+    const double u = 1.0 - random.uniform(), v = random.uniform();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+  };
+  for (Vec3& p : cloud.positions)
+    for (int axis = 0; axis < 3; ++axis) p[axis] += sigma * normal();
 }
 
 }  // namespace dg

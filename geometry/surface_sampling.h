@@ -13,4 +13,8 @@ namespace dg {
 /// a mesh without area gives an empty cloud.
 PointCloud sample_surface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed);
 
+/// Moves every point of `cloud` by an independent Gaussian offset of standard deviation `sigma`
+/// (model units) per axis, like scanner noise (seeded); normals stay as they are.
+void add_noise(PointCloud& cloud, double sigma, std::uint64_t seed);
+
 }  // namespace dg

@@ -162,7 +162,7 @@ std::vector<std::size_t> dominant_mode(const std::vector<Vec3>& residuals, doubl
 // at 0.25 eps (0 when the rounds stop before).
 Candidate refine_rounds(RigidTransform t, const std::vector<Keypoint>& keypoints, const KeypointGrid& grid, double eps,
                         double dihedral_tolerance, bool follow_mode, std::size_t* second_round_support = nullptr) {
-  constexpr std::array<double, 4> radii{1.0, 0.25, 0.1, 0.1};  // in eps
+  constexpr std::array<double, 4> radii{1.0, 0.25, 0.1, 0.1};  // in eps (eps scaled by match_radius_scale)
   Candidate candidate;
   candidate.transform = t;
   if (second_round_support) *second_round_support = 0;
@@ -217,8 +217,8 @@ void make_canonical(Candidate& c, double slide_tolerance) {
 
 Candidate refine_candidate(const RigidTransform& transform, const std::vector<Keypoint>& keypoints,
                            const CandidateOptions& options) {
-  const KeypointGrid grid(keypoints, options.eps);
-  Candidate c = refine(transform, keypoints, grid, options.eps, options.dihedral_tolerance_degrees);
+  const KeypointGrid grid(keypoints, options.match_radius_scale * options.eps);
+  Candidate c = refine(transform, keypoints, grid, options.match_radius_scale * options.eps, options.dihedral_tolerance_degrees);
   make_canonical(c, 0.5 * options.eps);
   return c;
 }
@@ -312,6 +312,7 @@ std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, c
     const Keypoint& b = keypoints[target];
     RigidTransform t;
     t.rotation = frame_matrix(b.tangent, b.normal, b.binormal) * frame_matrix(a.tangent, a.normal, a.binormal).transpose();
+    if (t.angle() < options.snap_to_translation_radians) t.rotation = Mat3::Identity();
     t.translation = b.position - t.rotation * a.position;
     return t;
   };
@@ -355,7 +356,7 @@ std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, c
   if (peaks.size() > max_peaks) peaks.resize(max_peaks);
   local.peaks = peaks.size();
 
-  const KeypointGrid grid(keypoints, eps);
+  const KeypointGrid grid(keypoints, options.match_radius_scale * eps);
   std::vector<Candidate> refined(peaks.size());
   tbb::parallel_for(std::size_t(0), peaks.size(), [&](std::size_t p) {
     // Mean of the bin's motions (rotation averaged through the matrix, re-orthonormalized).
@@ -363,7 +364,7 @@ std::vector<Candidate> find_candidates(const std::vector<Keypoint>& keypoints, c
     for (std::size_t v = peaks[p].second; v < peaks[p].second + peaks[p].first; ++v)
       sum += pair_motion(votes[v].source, votes[v].target).matrix();
     const RigidTransform mean = rigid_from_matrix(sum / static_cast<double>(peaks[p].first));
-    refined[p] = refine(mean, keypoints, grid, eps, options.dihedral_tolerance_degrees);
+    refined[p] = refine(mean, keypoints, grid, options.match_radius_scale * eps, options.dihedral_tolerance_degrees);
   });
 
   const double slide_tolerance = 0.5 * eps;

@@ -28,6 +28,12 @@ struct CandidateOptions {
   std::size_t min_support = 3;          ///< matched keypoint pairs a candidate needs after refinement
   double angle_bin_radians = 0.035;     ///< voting bin for the rotation vector
   double translation_bin_eps = 2.0;     ///< voting bin for the centre's displacement, in eps
+  /// Pair motions turning by less than this (radians) vote as the translation between the two
+  /// keypoints: the frames of a noisy point cloud's corners tilt by a few degrees, which would
+  /// move the displacement of a far centre by many voxels. 0 = off (exact frames of meshes).
+  double snap_to_translation_radians = 0.0;
+  /// Keypoint ICP match radii (1, 0.25, 0.1 eps) are multiplied by this (noisy corners).
+  double match_radius_scale = 1.0;
 };
 
 /// A proposed symmetry with its support: keypoint index pairs (source, image) that it maps

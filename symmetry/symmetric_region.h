@@ -86,8 +86,8 @@ struct SymmetricRegion {
 /// as symmetric (isolated outliers inside symmetric area), and so does a cluster of failed cells
 /// (with the untested cells they enclose) that symmetric cells surround, when it has at most
 /// the cells of a disk of diameter r (pi (r / 2 eps)^2). Early rejection: when fewer than a
-/// quarter of the seeds are symmetric, the candidate is bad and the region is returned empty
-/// without growing.
+/// quarter of the seeds (a tenth for point clouds) are symmetric, the candidate is bad and the
+/// region is returned empty without growing.
 SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
                                  std::span<const std::uint32_t> seeds, bool fill_outliers);
 

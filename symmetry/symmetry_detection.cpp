@@ -40,6 +40,11 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   }
   CandidateOptions candidate_options = options.candidates;
   candidate_options.eps = eps;
+  if (prepared.model.is_point_cloud()) {
+    candidate_options.snap_to_translation_radians = options.cloud_snap_to_translation_degrees * std::numbers::pi / 180.0;
+    candidate_options.match_radius_scale = options.cloud_match_radius_scale;
+    candidate_options.dihedral_tolerance_degrees = options.cloud_dihedral_tolerance_degrees;
+  }
   CandidateStats candidate_stats;
   std::vector<Candidate> candidates = find_candidates(keypoints, centre, candidate_options, &candidate_stats);
   if (prepared.model.is_point_cloud()) {
@@ -102,7 +107,12 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
     const std::size_t stride = std::max<std::size_t>(1, matches.size() / options.max_seeds);
     for (std::size_t m = 0; m < matches.size(); m += stride) {
       const std::int64_t cell = surface.find(surface.voxel_of(keypoints[matches[m].first].position));
-      if (cell >= 0) seeds.push_back(static_cast<std::uint32_t>(cell));
+      if (cell < 0) continue;
+      seeds.push_back(static_cast<std::uint32_t>(cell));
+      // A noisy cloud's corner cells rarely match (their planes are fitted to few points each):
+      // the flat cells around them seed too.
+      if (prepared.model.is_point_cloud())
+        for (std::uint32_t n : surface.neighbours(static_cast<std::uint32_t>(cell))) seeds.push_back(n);
     }
     std::sort(seeds.begin(), seeds.end());
     seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());

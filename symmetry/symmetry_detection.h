@@ -20,6 +20,12 @@ struct SymmetryOptions {
   std::size_t max_seeds = 64;                ///< seed cells per candidate for region growing
   int max_power = 64;                        ///< highest generator power probed for families
   std::size_t max_keypoints = 20000;         ///< feature-line ends used (evenly thinned beyond)
+  /// Point clouds: their corners' frames tilt and their positions scatter with the noise, so
+  /// pair motions turning less than this vote as translations, keypoint matches reach this many
+  /// times farther and dihedrals may differ this much (the motions are refined on the points after).
+  double cloud_snap_to_translation_degrees = 10.0;
+  double cloud_match_radius_scale = 4.0;
+  double cloud_dihedral_tolerance_degrees = 15.0;
 };
 
 struct DetectedSymmetry {

@@ -31,10 +31,13 @@ void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_pat
   write_file_atomically(ground_truth_path(mesh_path), [&](std::ostream& out) { out << text; }, false);
 }
 
-void write_asset_points(const Asset& asset, const std::filesystem::path& ply_path, std::size_t count, std::uint64_t seed) {
-  write_point_cloud(ply_path, sample_surface(asset.mesh, count, seed));
+void write_asset_points(const Asset& asset, const std::filesystem::path& ply_path, std::size_t count, std::uint64_t seed,
+                        double noise) {
+  PointCloud cloud = sample_surface(asset.mesh, count, seed);
+  if (noise > 0.0) add_noise(cloud, noise, seed + 1);
+  write_point_cloud(ply_path, cloud);
   nlohmann::json truth = asset.ground_truth;
-  truth["sampled_points"] = {{"count", count}, {"seed", seed}};
+  truth["sampled_points"] = {{"count", count}, {"seed", seed}, {"noise", noise}};
   const std::string text = truth.dump(2) + "\n";
   write_file_atomically(ground_truth_path(ply_path), [&](std::ostream& out) { out << text; }, false);
 }

@@ -31,9 +31,11 @@ std::filesystem::path ground_truth_path(const std::filesystem::path& mesh_path);
 void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_path);
 
 /// Writes a scan-like point cloud of the asset to `ply_path` (`count` points drawn area-uniformly
-/// on its surface with `seed`, with the triangles' normals; see sample_surface) and the ground
-/// truth next to it with "sampled_points": {"count", "seed"} added, both atomically. Throws
-/// InputError unless the path ends in .ply or when it cannot be written.
-void write_asset_points(const Asset& asset, const std::filesystem::path& ply_path, std::size_t count, std::uint64_t seed);
+/// on its surface with `seed`, with the triangles' normals, each moved by Gaussian noise of
+/// standard deviation `noise` model units per axis; see sample_surface and add_noise) and the
+/// ground truth next to it with "sampled_points": {"count", "seed", "noise"} added, both
+/// atomically. Throws InputError unless the path ends in .ply or when it cannot be written.
+void write_asset_points(const Asset& asset, const std::filesystem::path& ply_path, std::size_t count, std::uint64_t seed,
+                        double noise);
 
 }  // namespace dg::assets

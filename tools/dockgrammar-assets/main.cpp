@@ -1,7 +1,7 @@
 // dockgrammar-assets: writes the parametric exemplar models with their ground truth.
 //
 //   dockgrammar-assets NAME [--param key=value ...] [--detail K] [--target-triangles N] -o OUT.obj
-//   dockgrammar-assets NAME [--param key=value ...] --points N [--seed S] -o OUT.ply
+//   dockgrammar-assets NAME [--param key=value ...] --points N [--seed S] [--noise SIGMA] -o OUT.ply
 //   dockgrammar-assets --list
 //   dockgrammar-assets --all -o DIR
 //
@@ -45,6 +45,7 @@ int run(int argc, char** argv) {
   bool list = false, all = false;
   std::size_t points = 0;
   std::uint64_t seed = 1;
+  double noise = 0.0;
   app.add_option("name", name, "model name (see --list)");
   app.add_option("--param", param_items, "model parameter key=value (repeatable)");
   app.add_option("--detail", detail, "tessellation detail K >= 1 (triangles grow with K^2)")->check(CLI::Range(1, 1000));
@@ -53,6 +54,8 @@ int run(int argc, char** argv) {
   app.add_option("--points", points, "write a point cloud of N points drawn on the surface (PLY) instead of the mesh")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
   app.add_option("--seed", seed, "seed of the drawn points (with --points)")->capture_default_str();
+  app.add_option("--noise", noise, "with --points: Gaussian noise of this standard deviation per axis, model units")
+      ->check(CLI::Range(0.0, 1e6));
   app.add_flag("--list", list, "print the model names");
   app.add_flag("--all", all, "write the committed small instances into the folder given by -o");
   try {
@@ -85,11 +88,12 @@ int run(int argc, char** argv) {
   }
   if (name.empty()) throw dg::InputError("missing model NAME (see --list)");
   if (detail != 0 && target != 0) throw dg::InputError("--detail and --target-triangles exclude each other");
+  if (noise > 0.0 && points == 0) throw dg::InputError("--noise needs --points");
   nlohmann::json params = parse_params(param_items);
   if (detail != 0) params["detail"] = detail;
   const dg::assets::Asset asset = target == 0 ? dg::assets::make_asset(name, params) : dg::assets::make_asset_with_triangles(name, params, target);
   if (points != 0) {
-    dg::assets::write_asset_points(asset, output, points, seed);
+    dg::assets::write_asset_points(asset, output, points, seed, noise);
     std::cout << fmt::format("{}: {} points drawn on {} triangles -> {} and {}\n", asset.name, points, asset.mesh.triangles.size(),
                              output.string(), dg::assets::ground_truth_path(output).string());
     return 0;
