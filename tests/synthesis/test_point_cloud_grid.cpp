@@ -58,7 +58,7 @@ TEST_CASE("a point cloud drawn on the facade gives its 2-grid and resized points
           "[synthesis][grid][cloud]") {
   const dg::TriangleMesh exemplar = facade(3, 4);
   dg::Model model;
-  model.cloud.positions = dg::sample_surface(exemplar, 800000, 1).positions;  // no normals: scan-like
+  model.cloud.positions = dg::sample_surface(exemplar, 400000, 1).positions;  // no normals: scan-like
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
   const double eps = prepared.surface.eps();
   const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
