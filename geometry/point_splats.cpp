@@ -2,6 +2,7 @@
 
 #include "geometry/errors.h"
 
+#include <algorithm>
 #include <array>
 
 namespace dg {

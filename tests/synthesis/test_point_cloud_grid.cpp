@@ -125,6 +125,8 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   CHECK(summary["grids"][0]["pieces"][0].contains("points"));
   CHECK(summary["productions"].empty());
   CHECK(summary["dockers"].get<int>() > 0);
+  CHECK(summary["point_cloud"]["points"] == 400000);
+  CHECK(summary["point_cloud"]["points_per_voxel"].get<double>() > 3.0);
   const std::filesystem::path grammar_path = folder / "out" / "facade_points.grammar.json";
   std::ifstream grammar_file(grammar_path);
   const nlohmann::json grammar_json = nlohmann::json::parse(grammar_file);

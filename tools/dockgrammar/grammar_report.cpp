@@ -31,11 +31,16 @@ constexpr const char* kPointCloudRules =
 // occupied voxel (3.0 to 8.8 did; 2.5 gave part of it).
 constexpr double kDensePointsPerVoxel = 3.0;
 
+// Points of a cloud per occupied voxel of its voxel surface.
+double points_per_voxel(const PreparedModel& prepared) {
+  const std::size_t voxels = prepared.surface.cell_count();
+  return voxels == 0 ? 0.0 : static_cast<double>(prepared.model.cloud.positions.size()) / static_cast<double>(voxels);
+}
+
 // "N points, D per occupied voxel" and, below kDensePointsPerVoxel, a hint to use larger voxels.
 std::string cloud_density_text(const PreparedModel& prepared) {
-  const std::size_t points = prepared.model.cloud.positions.size(), voxels = prepared.surface.cell_count();
-  const double density = voxels == 0 ? 0.0 : static_cast<double>(points) / static_cast<double>(voxels);
-  std::string text = fmt::format("{} points, {:.1f} per occupied voxel", points, density);
+  const double density = points_per_voxel(prepared);
+  std::string text = fmt::format("{} points, {:.1f} per occupied voxel", prepared.model.cloud.positions.size(), density);
   if (density < kDensePointsPerVoxel)
     text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 3 points per voxel and more, part of it "
             "at 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for twice r)";
@@ -360,9 +365,13 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
                      {"parts_kept_whole", kept_whole},
                      {"pieces", pieces}});
   }
+  const bool cloud = report.prepared.model.is_point_cloud();
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
+          {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
+                                                 {"points_per_voxel", points_per_voxel(report.prepared)}}
+                                : nlohmann::json(nullptr)},
           {"materials", material_names(report.prepared.model.materials)},
           {"match_materials", report.prepared.materials_matched()},
           {"material_groups", material_groups(report.prepared)},
