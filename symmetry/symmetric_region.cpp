@@ -16,7 +16,8 @@ CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, c
       angle_tolerance_degrees_(options.angle_tolerance_degrees),
       max_bend_degrees_(options.max_bend_degrees),
       curved_deviation_(options.curved_deviation_eps * surface.eps()),
-      half_diagonal_(0.5 * std::sqrt(3.0) * surface.eps()) {}
+      half_diagonal_(0.5 * std::sqrt(3.0) * surface.eps()),
+      cloud_(cloud) {}
 
 bool CellMatcher::on_same_geometry(const Vec3& a, const Vec3& b, double distance, double bend_degrees) const {
   const double cos_angle = std::min(1.0, std::abs(a.dot(b)));
@@ -143,6 +144,21 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
   ImageCells image(surface_, surface_.voxel_of(t.apply(centre)));
 
   const std::span<const CellPlane> planes = surface_.planes(cell);
+  // A scan's bent cells (creases, corners) fit their planes to few points each, and noise tilts
+  // them: their mapped points decide instead, each near a plane of the image block.
+  if (cloud_ && planes.size() >= 2 && !surface_.points(cell).empty()) {
+    std::size_t near = 0;
+    const auto points = surface_.points(cell);
+    for (std::uint32_t p : points) {
+      const Vec3 q = t.apply(cloud_->positions[p]);
+      near += image.any([&](std::uint32_t other) {
+        const std::span<const CellPlane> candidates = surface_.planes(other);
+        return std::any_of(candidates.begin(), candidates.end(),
+                           [&](const CellPlane& c) { return std::abs(c.normal.dot(q) - c.offset) < offset_tolerance_; });
+      }) ? 1 : 0;
+    }
+    return 5 * near >= 4 * points.size();
+  }
   for (const CellPlane& plane : planes) {
     const Vec3 source_foot = centre - (plane.normal.dot(centre) - plane.offset) * plane.normal;
     const Vec3 foot = t.apply(source_foot);

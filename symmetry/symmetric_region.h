@@ -41,7 +41,9 @@ class CellMatcher {
   CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options = {});
 
   /// True when every plane and line of `cell`, mapped by `t`, lies on geometry near the image
-  /// of the cell centre.
+  /// of the cell centre. A point cloud's cell with two or more planes (a crease or corner, fitted
+  /// to few points each) instead needs 80 % of its points, mapped, within the offset tolerance
+  /// of a plane of the image cell or its 3x3x3 block.
   bool maps_onto_surface(std::uint32_t cell, const RigidTransform& t) const;
 
   /// Cell of the voxel holding t(centre(cell)), or the nearest occupied voxel around it; -1 if none.
@@ -68,6 +70,7 @@ class CellMatcher {
   double cos_tolerance_, offset_tolerance_;
   double angle_tolerance_degrees_, max_bend_degrees_, curved_deviation_;
   double half_diagonal_;  // of a voxel, model units
+  const PointCloud* cloud_;
 };
 
 struct SymmetricRegion {
