@@ -146,9 +146,9 @@ bool CellMatcher::maps_onto_surface(std::uint32_t cell, const RigidTransform& t)
   const std::span<const CellPlane> planes = surface_.planes(cell);
   // A scan's bent cells (creases, corners) fit their planes to few points each, and noise tilts
   // them: their mapped points decide instead, each near a plane of the image block.
-  if (cloud_ && planes.size() >= 2 && !surface_.points(cell).empty()) {
+  const std::span<const std::uint32_t> points = surface_.points(cell);
+  if (cloud_ && planes.size() >= 2 && !points.empty()) {
     std::size_t near = 0;
-    const auto points = surface_.points(cell);
     for (std::uint32_t p : points) {
       const Vec3 q = t.apply(cloud_->positions[p]);
       near += image.any([&](std::uint32_t other) {

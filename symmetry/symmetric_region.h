@@ -70,7 +70,7 @@ class CellMatcher {
   double cos_tolerance_, offset_tolerance_;
   double angle_tolerance_degrees_, max_bend_degrees_, curved_deviation_;
   double half_diagonal_;  // of a voxel, model units
-  const PointCloud* cloud_;
+  const PointCloud* cloud_;  // null for meshes
 };
 
 struct SymmetricRegion {
