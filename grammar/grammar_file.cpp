@@ -307,9 +307,9 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     return mesh;
   };
   // "surface": "points" (version 4) when the exemplar and the pieces are point clouds.
-  const bool points = version >= 4 && field<std::string>(document, "surface", where) == "points";
-  if (version >= 4 && !points && field<std::string>(document, "surface", where) != "mesh")
-    throw InputError(where + ": \"surface\" must be \"mesh\" or \"points\"");
+  const std::string surface = version >= 4 ? field<std::string>(document, "surface", where) : "mesh";
+  if (surface != "mesh" && surface != "points") throw InputError(where + ": \"surface\" must be \"mesh\" or \"points\"");
+  const bool points = surface == "points";
   auto load_points = [&](const std::string& relative) {
     const std::filesystem::path file = path.parent_path() / relative;
     if (!std::filesystem::exists(file)) throw InputError(where + ": sidecar point cloud " + file.string() + " is missing");

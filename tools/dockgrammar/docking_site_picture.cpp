@@ -4,7 +4,6 @@
 
 #include "geometry/cell_pieces.h"
 #include "geometry/model_io.h"
-#include "geometry/point_splats.h"
 #include "geometry/render_mesh.h"
 
 #include <algorithm>
@@ -57,13 +56,8 @@ bool write_docking_site_picture(const std::filesystem::path& png, const std::fil
 
   if (prepared.model.is_point_cloud()) {  // each point in its cell's colour
     const PointCloud& cloud = prepared.model.cloud;
-    std::vector<Rgb> point_colors(cloud.positions.size(), Rgb{225, 225, 225});
-    for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-      for (std::uint32_t p : surface.points(c)) point_colors[p] = cell_color[c];
-    std::vector<Rgba8> colors;
-    for (const Rgb& rgb : point_colors) colors.push_back({rgb[0], rgb[1], rgb[2], 255});
-    write_point_cloud(ply, cloud, &point_colors);
-    write_points_picture(png, cloud.positions, colors, kSplatRadius * surface.eps(), picture_options(cloud.bounds(), up_axis));
+    write_colored_cloud(png, ply, cloud, point_colors_of_cells(surface, cloud.positions.size(), cell_color), surface.eps(),
+                        picture_options(cloud.bounds(), up_axis));
     return true;
   }
   // Triangles whose cells share a colour stay whole; only those across colour borders are cut.

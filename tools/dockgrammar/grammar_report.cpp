@@ -3,7 +3,6 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
-#include "geometry/point_splats.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
 #include "grammar/seam_curve.h"
@@ -507,18 +506,14 @@ std::vector<std::filesystem::path> write_analysis_pictures(const std::filesystem
     const std::filesystem::path png = folder / (stem + "." + grid.rule.name + ".png"),
                                 ply = folder / (stem + "." + grid.rule.name + ".ply");
     if (points) {
-      std::vector<Rgba8> colors;
       std::vector<Rgb> point_colors;
       for (const Vec3& p : cloud.positions) {
         std::vector<std::size_t> slabs;
         for (const GridDirection& d : grid.rule.directions) slabs.push_back(slab_of_point(d, p));
         const Rgba8 color = grid_piece_color(grid.rule, slabs);
-        colors.push_back(color);
         point_colors.push_back({color.r, color.g, color.b});
       }
-      write_point_cloud(ply, cloud, &point_colors);
-      write_points_picture(png, cloud.positions, colors, kSplatRadius * report.grammar.eps,
-                           picture_options(cloud.bounds(), report.grammar.up_axis));
+      write_colored_cloud(png, ply, cloud, point_colors, report.grammar.eps, picture_options(cloud.bounds(), report.grammar.up_axis));
       written.push_back(png);
       continue;
     }

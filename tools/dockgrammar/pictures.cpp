@@ -1,6 +1,7 @@
 #include "tools/dockgrammar/pictures.h"
 
 #include "geometry/errors.h"
+#include "geometry/point_splats.h"
 
 #include <algorithm>
 #include <array>
@@ -62,6 +63,22 @@ std::vector<Rgba8> material_colors(const TriangleMesh& mesh, const std::vector<M
     colors.push_back({channel(c.x()), channel(c.y()), channel(c.z()), 255});
   }
   return colors;
+}
+
+std::vector<Rgb> point_colors_of_cells(const VoxelSurface& surface, std::size_t point_count, const std::vector<Rgb>& cell_colors) {
+  std::vector<Rgb> colors(point_count, Rgb{225, 225, 225});
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+    for (std::uint32_t p : surface.points(c)) colors[p] = cell_colors[c];
+  return colors;
+}
+
+void write_colored_cloud(const std::filesystem::path& png, const std::filesystem::path& ply, const PointCloud& cloud,
+                         const std::vector<Rgb>& point_colors, double eps, const MeshRenderOptions& options) {
+  std::vector<Rgba8> colors;
+  colors.reserve(point_colors.size());
+  for (const Rgb& rgb : point_colors) colors.push_back({rgb[0], rgb[1], rgb[2], 255});
+  write_point_cloud(ply, cloud, &point_colors);
+  write_points_picture(png, cloud.positions, colors, kSplatRadius * eps, options);
 }
 
 }  // namespace dg::cli

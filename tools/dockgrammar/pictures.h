@@ -3,11 +3,14 @@
 
 #include "geometry/image.h"
 #include "geometry/mesh.h"
+#include "geometry/model_io.h"
+#include "geometry/voxel_surface.h"
 #include "geometry/render_mesh.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -39,5 +42,14 @@ Rgba8 class_color(std::size_t i);
 /// One colour per triangle of `mesh`: its material's diffuse colour (8 bits per channel), or
 /// none (pictures use their default colour) when the mesh or `materials` has no materials.
 std::vector<Rgba8> material_colors(const TriangleMesh& mesh, const std::vector<Material>& materials);
+
+/// The colour of each point of a cloud of `point_count` points: the colour of its cell of
+/// `surface` (built from that cloud), `cell_colors` holding one per cell.
+std::vector<Rgb> point_colors_of_cells(const VoxelSurface& surface, std::size_t point_count, const std::vector<Rgb>& cell_colors);
+
+/// Writes `ply` (the cloud with `point_colors`, one per point) and `png` (its points drawn as
+/// splats of kSplatRadius * eps in those colours, with `options`).
+void write_colored_cloud(const std::filesystem::path& png, const std::filesystem::path& ply, const PointCloud& cloud,
+                         const std::vector<Rgb>& point_colors, double eps, const MeshRenderOptions& options);
 
 }  // namespace dg::cli

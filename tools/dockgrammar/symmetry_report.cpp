@@ -2,7 +2,6 @@
 
 #include "geometry/cell_pieces.h"
 #include "geometry/model_io.h"
-#include "geometry/point_splats.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
@@ -140,14 +139,11 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
                                 png = folder / fmt::format("symmetry_{:02}.png", i + 1);
     MeshRenderOptions options = picture_options(prepared.model.bounds(), up_axis);
     if (prepared.model.is_point_cloud()) {  // each point in its cell's colour
+      std::vector<Rgb> cell_colors;
+      for (std::uint32_t st : state) cell_colors.push_back(color_of(st));
       const PointCloud& cloud = prepared.model.cloud;
-      std::vector<Rgb> point_colors(cloud.positions.size(), color_of(grey));
-      for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-        for (std::uint32_t p : surface.points(c)) point_colors[p] = color_of(state[c]);
-      std::vector<Rgba8> colors;
-      for (const Rgb& rgb : point_colors) colors.push_back({rgb[0], rgb[1], rgb[2], 255});
-      write_point_cloud(ply, cloud, &point_colors);
-      write_points_picture(png, cloud.positions, colors, kSplatRadius * surface.eps(), options);
+      write_colored_cloud(png, ply, cloud, point_colors_of_cells(surface, cloud.positions.size(), cell_colors), surface.eps(),
+                          options);
       continue;
     }
     // Triangles whose cells share a state stay whole; only those across state borders are cut.
