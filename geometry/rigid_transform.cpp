@@ -18,6 +18,13 @@ RigidTransform RigidTransform::after(const RigidTransform& first) const {
   return {rotation * first.rotation, rotation * first.translation + translation};
 }
 
+RigidTransform power(const RigidTransform& t, int k) {
+  const RigidTransform step = k >= 0 ? t : t.inverse();
+  RigidTransform result;
+  for (int j = 0; j < std::abs(k); ++j) result = step.after(result);
+  return result;
+}
+
 Mat4 RigidTransform::matrix() const {
   Mat4 m = Mat4::Identity();
   m.topLeftCorner<3, 3>() = rotation;

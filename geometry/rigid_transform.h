@@ -28,6 +28,9 @@ struct RigidTransform {
   Vec3 axis() const;
 };
 
+/// The motion applied k times (k < 0: its inverse applied -k times; k = 0: the identity).
+RigidTransform power(const RigidTransform& t, int k);
+
 /// Identity-free description of a motion, as a screw: rotation by `angle` about the line
 /// through `axis_point` with direction `axis`, then translation by `slide` along the axis.
 /// Translations have angle 0, axis = translation direction and slide = its length.

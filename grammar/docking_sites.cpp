@@ -291,7 +291,7 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
   const VoxelSurface& surface = prepared.surface;
   if (surface.cell_count() == 0) return result;
   const bool point_cloud = prepared.model.is_point_cloud();
-  const CellMatcher matcher(surface, point_cloud ? &prepared.model.cloud : nullptr);
+  const CellMatcher matcher(surface, point_cloud ? &prepared.model.cloud : nullptr, symmetries.region);
   // One member per family, the smallest power found: higher powers (2t, 3t, ...) repeat its
   // operations.
   std::vector<int> smallest_power(symmetries.families.size(), std::numeric_limits<int>::max());

@@ -183,6 +183,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                      {"counts", counts},
                      {"transforms", transforms},
                      {"count_range", {grid.rule.min_count, grid.rule.max_count}},
+                     {"seam_misfit", grid.rule.seam_misfit},
                      {"directions", directions},
                      {"pieces", pieces}});
   }
@@ -328,6 +329,11 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     if (range.size() != 2) throw InputError(where + ": count_range must have two numbers");
     entry.rule.min_count = range[0];
     entry.rule.max_count = range[1];
+    if (grid.contains("seam_misfit")) {
+      entry.rule.seam_misfit = field<double>(grid, "seam_misfit", where);
+      if (!(entry.rule.seam_misfit >= 0.0 && std::isfinite(entry.rule.seam_misfit)))
+        throw InputError(where + ": grid " + entry.rule.name + " has a seam_misfit that is not a finite number >= 0");
+    }
     for (const nlohmann::json& d : field<nlohmann::json>(grid, "directions", where)) {
       GridDirection direction;
       const auto t = field<std::vector<double>>(d, "translation", where);

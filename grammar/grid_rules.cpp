@@ -484,7 +484,7 @@ std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const Symm
       const std::size_t member = family.members[by_power[i]];
       const DetectedSymmetry& symmetry = symmetries.symmetries[member];
       if (!spans_pitches(prepared.cleaning.bounds, symmetry.transform.translation, options.min_repeats)) continue;
-      const WholeParts whole = whole_parts(prepared, parts, symmetry);
+      const WholeParts whole = whole_parts(prepared, parts, symmetry, symmetries.region);
       if (whole.empty()) continue;
       std::optional<GridDirection> direction =
           grid_direction(whole.rest, whole.motion, member, options.min_repeats, options.max_slab_asymmetry);

@@ -55,6 +55,9 @@ struct GridRule {
   std::vector<GridDirection> directions;
   int min_count = 0;     ///< every direction accepts counts in [min_count, max_count]
   int max_count = 1000;
+  /// How closely the seams of its pieces meet where a resize joins them, model units
+  /// (grid_seam_misfit, grammar/grid_seams.h; measured once the pieces are cut).
+  double seam_misfit = 0.0;
 };
 
 struct GridOptions {

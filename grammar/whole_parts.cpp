@@ -116,8 +116,8 @@ PreparedModel without_triangles(const PreparedModel& prepared, const std::vector
 
 // The symmetric region of `t` on `surface` with every cell tested (not only those connected to
 // seeds), and its erosion by r.
-SymmetricRegion tested_region(const VoxelSurface& surface, const RigidTransform& t) {
-  const CellMatcher matcher(surface, nullptr);
+SymmetricRegion tested_region(const VoxelSurface& surface, const RigidTransform& t, const RegionOptions& matching) {
+  const CellMatcher matcher(surface, nullptr, matching);
   const RigidTransform inverse = t.inverse();
   std::vector<char> symmetric(surface.cell_count(), 0);
   tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(surface.cell_count()),
@@ -151,7 +151,8 @@ ModelParts model_parts(const TriangleMesh& mesh) {
 
 bool WholeParts::empty() const { return std::find(kept.begin(), kept.end(), 1) == kept.end(); }
 
-WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, const DetectedSymmetry& symmetry) {
+WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, const DetectedSymmetry& symmetry,
+                       const RegionOptions& matching) {
   const TriangleMesh& mesh = prepared.model.mesh;
   const VoxelSurface& surface = prepared.surface;
   const std::vector<std::uint32_t>& part_of = model.part;
@@ -164,7 +165,7 @@ WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, c
   const double largest = kWholePartShare * mesh.area();
   std::vector<char> known_symmetric(surface.cell_count(), 0);
   for (std::uint32_t c : symmetry.region.symmetric_cells) known_symmetric[c] = 1;
-  const CellMatcher matcher(surface, nullptr);
+  const CellMatcher matcher(surface, nullptr, matching);
   const RigidTransform inverse = symmetry.transform.inverse();
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
     const auto triangles = surface.triangles(c);
@@ -204,7 +205,7 @@ WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, c
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) removed[t] = whole.kept[part_of[t]];
   whole.rest = without_triangles(prepared, removed);
   whole.motion = symmetry;
-  whole.motion.region = tested_region(whole.rest.surface, symmetry.transform);
+  whole.motion.region = tested_region(whole.rest.surface, symmetry.transform, matching);
   return whole;
 }
 

@@ -45,7 +45,9 @@ inline constexpr double kWholePartShare = 0.05;
 /// cell holding only their triangles is not symmetric), with the rest of the model and the
 /// motion's symmetric region on it (every cell of the rest tested). Empty when no part has a copy
 /// moved by the translation (there is no row of parts) or none can be kept whole.
-/// `parts` are the model_parts of the prepared mesh.
-WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& parts, const DetectedSymmetry& symmetry);
+/// `parts` are the model_parts of the prepared mesh; cells are matched with `matching` (the
+/// tolerances the symmetry was detected with, SymmetryResult::region).
+WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& parts, const DetectedSymmetry& symmetry,
+                       const RegionOptions& matching);
 
 }  // namespace dg

@@ -24,6 +24,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOptions& options,
                                  const ProgressCallback& progress) {
   SymmetryResult result;
+  result.region = options.region;
   const VoxelSurface& surface = prepared.surface;
   const double eps = surface.eps();
   const Vec3 centre = 0.5 * (prepared.model.bounds().min + prepared.model.bounds().max);

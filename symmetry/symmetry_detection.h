@@ -61,6 +61,9 @@ struct SymmetryResult {
   SymmetryStats stats;
   std::vector<StageTiming> timings;
   std::string note;  ///< why nothing was found, when nothing was (e.g. no feature lines)
+  /// The cell-matching tolerances the regions were computed with; later stages that test cells
+  /// for these motions (docking sites, parts kept whole, pictures) match with the same.
+  RegionOptions region;
 };
 
 /// Detects partial rigid symmetries of a prepared model. Deterministic for any thread count.

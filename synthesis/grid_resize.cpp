@@ -19,17 +19,11 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
   std::vector<RigidTransform> placements{RigidTransform{}};
   for (std::size_t i = 0; i < grid.directions.size(); ++i) {
     const GridDirection& d = grid.directions[i];
-    auto power = [&](int k) {
-      const RigidTransform step = k >= 0 ? d.motion : d.motion.inverse();
-      RigidTransform result;
-      for (int j = 0; j < std::abs(k); ++j) result = step.after(result);
-      return result;
-    };
     std::vector<RigidTransform> along;
     if (piece.classes[i] == 0) along.push_back(RigidTransform{});
     if (piece.classes[i] == 1)
       for (int k = 0; k < counts[i] - min_units(d); ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
-    if (piece.classes[i] == 2) along.push_back(power(counts[i] - d.count));
+    if (piece.classes[i] == 2) along.push_back(power(d.motion, counts[i] - d.count));
     std::vector<RigidTransform> combined;
     for (const RigidTransform& a : placements)
       for (const RigidTransform& b : along) combined.push_back(b.after(a));

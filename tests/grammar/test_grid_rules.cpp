@@ -51,6 +51,32 @@ TEST_CASE("fence(n): a 1-grid along the post pitch whose count is the number of 
   }
 }
 
+TEST_CASE("fence(9) with posts set up to 0.15 eps out of line: the whole grid needs a wider tolerance", "[grammar][grid]") {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset("fence", {{"n", 9}}).mesh;
+  // Every second inner post (x = k * 2 m, k odd) stands 0.15 eps of the default voxel (r = 1.6 %
+  // of the longest side, eps = r / 4) out of line, as if placed by hand: its front and back
+  // faces move across the fence; where it meets the rails nothing moves.
+  const Vec3 size = model.mesh.bounds().max - model.mesh.bounds().min;
+  const double eps = 0.016 * size.maxCoeff() / 4.0, shift = 0.15 * eps;
+  for (Vec3& p : model.mesh.positions)
+    for (int k = 1; k <= 9; k += 2)
+      if (std::abs(p.x() - 2.0 * k) <= 0.05 + 1e-9 && std::abs(p.y()) > 0.049) p.y() += shift;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  REQUIRE(prepared.surface.eps() == Approx(eps));
+  auto units = [&](double tolerance) {
+    dg::SymmetryOptions options;
+    options.region.offset_tolerance_eps = tolerance;
+    const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared, options));
+    int most = 0;
+    for (const dg::GridRule& g : grids)
+      if (const dg::GridDirection* along = direction_along(g, Vec3(2.0, 0, 0)); along != nullptr) most = std::max(most, along->count);
+    return most;
+  };
+  CHECK(units(dg::RegionOptions{}.offset_tolerance_eps) < 9);  // exact matching: the moved posts break the run
+  CHECK(units(0.25) == 9);                                      // ground truth: 9 inner posts
+}
+
 TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the generator's counts", "[grammar][grid]") {
   const Analysis a = analyze_asset("facade", {{"columns", 3}, {"rows", 4}});
   REQUIRE(a.grids.size() == 1);

@@ -3,7 +3,7 @@
 #include "assets/generator/asset.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
-#include "grammar/grid_rules.h"
+#include "grammar/grid_seams.h"
 
 namespace dg::test {
 
@@ -24,6 +24,7 @@ ShapeGrammar model_grammar(Model model, bool context_free, const PrepareOptions&
   if (context_free) grammar.context_free = build_context_free_grammar(prepared, find_docking_sites(prepared, symmetries), {});
   for (GridRule& rule : find_grids(prepared, symmetries)) {
     auto pieces = cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
+    rule.seam_misfit = grid_seam_misfit(rule, pieces, grammar.eps);
     grammar.grids.push_back({std::move(rule), std::move(pieces)});
   }
   return grammar;

@@ -102,7 +102,7 @@ TEST_CASE("facade(5 x 4) with rooftop boxes: one column unit between them, and r
   const double second_x = (columns.cut + columns.pitch) * columns.direction.x();
   CHECK(std::min(first_x, second_x) > 7.5);
   CHECK(std::max(first_x, second_x) < 13.5);
-  const double weld = dg::kSeamWeldFraction * g.eps;
+  const double weld = dg::kSeamWeldFloorFraction * g.eps;
   check_same_shape(dg::resize_grid(g.grid, g.pieces, own, weld), exemplar, g.eps);
   // Three columns and six rows: the generator's facade with the first box where it stood and
   // the second two columns further on (both on a roof two rows higher).
@@ -121,7 +121,7 @@ TEST_CASE("messy facade: damaged rows stay in the head, so added rows are clean 
   for (const dg::GridDirection& d : clean.grid.directions) CHECK(dg::min_units(d) == 0);
   const auto own = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 4}});
   const auto taller = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 7}});
-  const double weld = dg::kSeamWeldFraction * messy.eps;
+  const double weld = dg::kSeamWeldFloorFraction * messy.eps;
   dg::TriangleMesh exemplar_copy = dg::resize_grid(messy.grid, messy.pieces, own, weld);
   dg::TriangleMesh taller_copy = dg::resize_grid(messy.grid, messy.pieces, taller, weld);
   const dg::CleaningReport own_damage = dg::clean_mesh(exemplar_copy);

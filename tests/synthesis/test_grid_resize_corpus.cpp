@@ -61,7 +61,7 @@ TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one balu
   REQUIRE(grids[0].directions.size() == 1);
   const int own = grids[0].directions[0].count;
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(exemplar, grids[0], eps);
-  const double weld = dg::kSeamWeldFraction * eps;
+  const double weld = dg::kSeamWeldFloorFraction * eps;
 
   // The grid's own count gives the exemplar back.
   const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {own}, weld);
@@ -109,7 +109,7 @@ TEST_CASE("corpus: the Kenney metal gate resized past its exemplar's counts stay
   for (const std::vector<int>& counts : {std::vector<int>{own[0] + 3, own[1]}, std::vector<int>{own[0], own[1] + 2}}) {
     CAPTURE(counts);
     dg::Model candidate;
-    candidate.mesh = dg::resize_grid(grids[0], pieces, counts, dg::kSeamWeldFraction * eps);
+    candidate.mesh = dg::resize_grid(grids[0], pieces, counts, dg::kSeamWeldFloorFraction * eps);
     const dg::VerifyReport report = dg::verify_models(dg::read_model(*gate), std::move(candidate));
     CHECK(report.similarity.fraction >= 0.995);
     CHECK(report.pass);

@@ -24,6 +24,10 @@ TEST_CASE("options: negative, infinite and oversized numbers are usage errors wi
   CHECK(zero_top.status == 2);
   CHECK(zero_top.output.find("--top: must be greater than 0") != std::string::npos);
 
+  const dg::test::CliRun no_tolerance = run("symmetry " + model + " -q --tolerance 0");
+  CHECK(no_tolerance.status == 2);
+  CHECK(no_tolerance.output.find("--tolerance: Value 0 not in range") != std::string::npos);
+
   // A voxel larger than the radius leaves no r-neighbourhood to compare.
   const dg::test::CliRun coarse = run("analyze " + model + " -q -r 0.1 --voxel 0.5 -o " + (folder / "out").string());
   CHECK(coarse.status == 2);

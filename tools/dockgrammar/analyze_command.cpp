@@ -12,6 +12,7 @@
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
 #include "grammar/grid_rules.h"
+#include "grammar/grid_seams.h"
 #include "symmetry/symmetry_detection.h"
 
 #include <fmt/core.h>
@@ -24,6 +25,7 @@ namespace dg::cli {
 void add_analyze_command(CLI::App& app) {
   struct Options {
     ModelOptions model;
+    double tolerance_eps = RegionOptions{}.offset_tolerance_eps;
     std::string output = ".";
     std::uint64_t seed = 1;
     std::string up;
@@ -32,6 +34,7 @@ void add_analyze_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "analyze", "Find the symmetries and grid rules of a model; write NAME.grammar.json, NAME.report.md and pictures");
   add_model_options(*command, options->model);
+  add_tolerance_option(*command, options->tolerance_eps);
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
       ->capture_default_str();
@@ -40,7 +43,7 @@ void add_analyze_command(CLI::App& app) {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
-    const SymmetryResult symmetries = detect_symmetries(prepared, {}, progress);
+    const SymmetryResult symmetries = detect_symmetries(prepared, symmetry_options(options->tolerance_eps), progress);
 
     Stopwatch stopwatch;
     std::vector<StageTiming> grammar_timings;
@@ -56,6 +59,7 @@ void add_analyze_command(CLI::App& app) {
     for (GridRule& rule : find_grids(prepared, symmetries, {}, progress)) {
       std::vector<GridPiece> pieces = prepared.model.is_point_cloud() ? cut_grid_points(prepared.model.cloud, rule)
                                                                       : cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
+      rule.seam_misfit = grid_seam_misfit(rule, pieces, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
     grammar_timings.push_back({"grid rules", stopwatch.lap()});

@@ -5,6 +5,7 @@
 #include "geometry/model_io.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
+#include "grammar/grid_seams.h"
 #include "grammar/seam_curve.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/docking_site_picture.h"
@@ -292,6 +293,33 @@ std::string materials_hint(const PreparedModel& prepared, std::string_view quote
       quote);
 }
 
+// Position tolerance of cell matching that the symmetries were found with, eps.
+double match_tolerance(const AnalysisReport& report) {
+  const RegionOptions& region = report.symmetries.region;
+  return report.prepared.model.is_point_cloud() ? region.cloud_offset_tolerance_eps : region.offset_tolerance_eps;
+}
+
+// A suggestion to widen --tolerance when, at the default, a translation repeats far more often
+// than any grid has units (repeats placed or modelled a little unevenly break the planes between
+// them); empty otherwise.
+std::string tolerance_hint(const AnalysisReport& report, std::string_view quote = "") {
+  if (report.prepared.model.is_point_cloud() || match_tolerance(report) != RegionOptions{}.offset_tolerance_eps) return "";
+  int units = 0;
+  for (const GridWithPieces& grid : report.grammar.grids)
+    for (const GridDirection& d : grid.rule.directions) units = std::max(units, d.count);
+  const std::vector<SymmetryFamily>& families = report.symmetries.families;
+  std::size_t most = families.size();
+  for (std::size_t f = 0; f < families.size(); ++f)
+    if (families[f].kind == "translation" && (most == families.size() || families[f].count > families[most].count)) most = f;
+  if (most == families.size() || families[most].count < static_cast<std::size_t>(2 * units + 2)) return "";
+  return fmt::format(
+      "translation F{} repeats {} times, but {}: if its repeats were placed or modelled a little unevenly, "
+      "{}--tolerance 0.25{} may find more",
+      most + 1, families[most].count,
+      units == 0 ? std::string("no grid was found") : fmt::format("no grid has more than {} unit{}", units, units == 1 ? "" : "s"),
+      quote, quote);
+}
+
 }  // namespace
 
 std::string analysis_text(const AnalysisReport& report) {
@@ -311,6 +339,7 @@ std::string analysis_text(const AnalysisReport& report) {
                          grid_motion_text(d), vec(d.direction), d.pitch, d.count, d.count == 1 ? "" : "s", d.cut,
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
+  if (const std::string hint = tolerance_hint(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
@@ -361,6 +390,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
                      {"transforms", transforms},
                      {"count_range", {grid.rule.min_count, grid.rule.max_count}},
                      {"min_counts", lowest},
+                     {"seam_misfit", grid.rule.seam_misfit},
                      {"parts_kept_whole", kept_whole},
                      {"pieces", pieces}});
   }
@@ -368,6 +398,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
+          {"tolerance", match_tolerance(report)},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
                                                  {"points_per_voxel", points_per_voxel(report.prepared)}}
                                 : nlohmann::json(nullptr)},
@@ -404,6 +435,11 @@ void write_analysis_report(const AnalysisReport& report) {
                       "analysis.\n\n",
                       prepared.surface.r(), prepared.surface.eps(), c.vertices, c.triangles, c.degenerate_dropped,
                       c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
+  md += fmt::format("Cells match when the planes and feature lines of one, moved, lie within {:.3g}° and {:.3g} eps "
+                    "of the other's (`--tolerance`).\n\n",
+                    prepared.model.is_point_cloud() ? report.symmetries.region.cloud_angle_tolerance_degrees
+                                                    : report.symmetries.region.angle_tolerance_degrees,
+                    match_tolerance(report));
   md += materials_paragraph(prepared);
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);
@@ -413,6 +449,7 @@ void write_analysis_report(const AnalysisReport& report) {
         "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
         "area){}.\n\n",
         materials_hint(report.prepared, "`"));
+  if (const std::string hint = tolerance_hint(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   for (const GridWithPieces& grid : report.grammar.grids) {
     md += fmt::format(
         "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",
@@ -445,6 +482,9 @@ void write_analysis_report(const AnalysisReport& report) {
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
       ranges += fmt::format("{}direction {}: {}..{}", i == 0 ? "" : ", ", i + 1, lowest_count(grid.rule, i), grid.rule.max_count);
     md += fmt::format("\nAllowed counts: {}. Picture: `{}.png`.\n\n", ranges, model_stem(report) + "." + grid.rule.name);
+    if (!report.prepared.model.is_point_cloud())
+      md += fmt::format("Where a resize joins its pieces, their seams lie up to {:.2g} eps apart; resize welds them within {:.2g} eps.\n\n",
+                        grid.rule.seam_misfit / report.grammar.eps, grid_weld_tolerance(grid.rule, report.grammar.eps) / report.grammar.eps);
   }
   md += context_free_markdown(report);
   md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", missing_text());

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <unistd.h>
 
@@ -33,6 +34,23 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
   command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");
+}
+
+void add_tolerance_option(CLI::App& command, double& tolerance_eps) {
+  command
+      .add_option("--tolerance", tolerance_eps,
+                  "How far apart, in voxels (eps), mapped geometry may lie from its image and still count as a "
+                  "copy: the default suits exact repeats; 0.2-0.3 finds repeats that were placed or modelled "
+                  "a little unevenly (bars of a hand-made railing); larger values start to merge different shapes")
+      ->check(CLI::Range(0.01, 1.0))
+      ->capture_default_str();
+}
+
+SymmetryOptions symmetry_options(double tolerance_eps) {
+  SymmetryOptions options;
+  options.region.offset_tolerance_eps = tolerance_eps;
+  options.region.cloud_offset_tolerance_eps = std::max(options.region.cloud_offset_tolerance_eps, tolerance_eps);
+  return options;
 }
 
 std::unique_ptr<tbb::global_control> limit_threads(int threads) {

@@ -118,7 +118,7 @@ void write_symmetry_pictures(const std::filesystem::path& folder, const Prepared
                              const SymmetryResult& result, std::size_t top, const std::string& up_axis) {
   create_output_folder(folder);
   const VoxelSurface& surface = prepared.surface;
-  const CellMatcher matcher(surface, nullptr);
+  const CellMatcher matcher(surface, nullptr, result.region);
   enum : std::uint8_t { grey = 0, pink = 1, red = 2, blue = 4 };
   auto color_of = [](std::uint32_t state) {
     if (state & blue) return (state & red) ? Rgb{150, 60, 200} : Rgb{40, 90, 220};

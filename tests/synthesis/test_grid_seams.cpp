@@ -1,0 +1,132 @@
+// Seams of grid pieces that meet only approximately: measured, and welded within that distance.
+
+#include "grammar/grid_seams.h"
+
+#include "assets/generator/asset.h"
+#include "geometry/topology.h"
+#include "grammar/grammar_file.h"
+#include "support/cli_run.h"
+#include "support/corpus.h"
+#include "synthesis/grid_resize.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+
+using dg::Vec3;
+
+TEST_CASE("grid seams: a unit whose top seam lies off its neighbour's is measured and welded shut", "[synthesis][grid]") {
+  dg::Model model;
+  model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const double eps = prepared.surface.eps();
+  std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  REQUIRE(grids.size() == 1);
+  dg::GridRule& grid = grids[0];
+  REQUIRE(grid.directions.size() == 1);
+  std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, eps);
+
+  // The generator's copies are exact: the seams meet up to rounding.
+  CHECK(dg::grid_seam_misfit(grid, pieces, eps) < 1e-6 * eps);
+
+  // Lift the unit's top seam (the rails' cross-sections on its upper plane) by 0.1 eps, as if
+  // the exemplar's next unit were modelled that much higher there.
+  const dg::GridDirection& d = grid.directions[0];
+  const double top = d.cut + (d.head_units + 1) * d.pitch;
+  const double lift = 0.1 * eps;
+  std::size_t lifted = 0;
+  for (dg::GridPiece& piece : pieces)
+    if (piece.classes[0] == 1)
+      for (Vec3& p : piece.mesh.positions)
+        if (std::abs(d.direction.dot(p) - top) < 1e-9) {
+          p.z() += lift;
+          ++lifted;
+        }
+  REQUIRE(lifted > 0);
+  grid.seam_misfit = dg::grid_seam_misfit(grid, pieces, eps);
+  CHECK(grid.seam_misfit == Approx(lift).epsilon(1e-6));
+  CHECK(dg::grid_weld_tolerance(grid, eps) == Approx(2.0 * lift).epsilon(1e-6));
+
+  // Welded at float rounding, the lifted seams stay open; within the measured misfit they close.
+  const std::vector<int> counts{d.count + 2};
+  CHECK(dg::edge_statistics(dg::resize_grid(grid, pieces, counts, dg::kSeamWeldFloorFraction * eps)).boundary_edges > 0);
+  const dg::TriangleMesh welded = dg::resize_grid(grid, pieces, counts, dg::grid_weld_tolerance(grid, eps));
+  const dg::EdgeStatistics stats = dg::edge_statistics(welded);
+  CHECK(stats.boundary_edges == 0);
+  CHECK(stats.non_manifold_edges == 0);
+}
+
+TEST_CASE("corpus: the Scopia iron railing gives its 9 frames at a tolerance of 0.25 eps and resizes welded",
+          "[synthesis][grid][corpus]") {
+  const std::optional<std::filesystem::path> railing =
+      dg::test::corpus_file_if_present("meshes/arch-scopia-iron-railing/iron-railing-1.obj");
+  if (!railing) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*railing);
+  const double eps = prepared.surface.eps();
+  const Vec3 pitch(15.8506, 0, 0);  // two bars: one oval frame and its bars (SOURCES.md: 9 frames)
+  auto frames = [&](const std::vector<dg::GridRule>& grids) -> const dg::GridRule* {
+    for (const dg::GridRule& g : grids)
+      if (g.directions.size() == 1 && ((g.directions[0].translation - pitch).norm() < 1e-3 ||
+                                       (g.directions[0].translation + pitch).norm() < 1e-3))
+        return &g;
+    return nullptr;
+  };
+  // Exact matching: the hand-modelled scrolls and frames repeat only within about 0.2 eps, and
+  // the planes fit 3 units.
+  const std::vector<dg::GridRule> exact = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  REQUIRE(frames(exact) != nullptr);
+  CHECK(frames(exact)->directions[0].count < 9);
+
+  dg::SymmetryOptions tolerant;
+  tolerant.region.offset_tolerance_eps = 0.25;
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared, tolerant));
+  REQUIRE(frames(grids) != nullptr);
+  dg::GridRule grid = *frames(grids);
+  CHECK(grid.directions[0].count == 9);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, eps);
+  grid.seam_misfit = dg::grid_seam_misfit(grid, pieces, eps);
+  CHECK(grid.seam_misfit > 1e-3 * eps);
+  CHECK(grid.seam_misfit < 0.25 * eps);
+
+  // 12 frames: welded at float rounding the seams between copies stay open; welded within the
+  // measured misfit the result has no more open edges than the exemplar (32).
+  const std::size_t exemplar_open = dg::edge_statistics(prepared.model.mesh).boundary_edges;
+  const dg::EdgeStatistics loose = dg::edge_statistics(dg::resize_grid(grid, pieces, {12}, dg::kSeamWeldFloorFraction * eps));
+  const dg::EdgeStatistics welded = dg::edge_statistics(dg::resize_grid(grid, pieces, {12}, dg::grid_weld_tolerance(grid, eps)));
+  CHECK(loose.boundary_edges > exemplar_open + 100);
+  CHECK(welded.boundary_edges <= exemplar_open);
+  CHECK(welded.non_manifold_edges == 0);
+}
+
+TEST_CASE("analyze --tolerance: the summary and report give the tolerance and the grammar keeps the grid's seam misfit",
+          "[synthesis][grid][tools]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-tolerance-test");
+  const dg::test::AnalyzedModel fence = dg::test::analyze_model("fence_4", folder, "--tolerance 0.25 --json");
+  REQUIRE(fence.run.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(fence.run.output);
+  CHECK(summary["tolerance"].get<double>() == 0.25);
+  REQUIRE(summary["grids"].size() == 1);
+  CHECK(summary["grids"][0]["counts"] == nlohmann::json::array({4}));
+  std::ifstream report(folder / "fence_4.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("within 1° and 0.25 eps") != std::string::npos);
+  CHECK(text.find("their seams lie up to") != std::string::npos);
+
+  // The grammar file keeps the measured misfit (the generator's copies are exact) and refuses a
+  // negative one.
+  const dg::ShapeGrammar grammar = dg::read_grammar(fence.grammar);
+  REQUIRE(grammar.grids.size() == 1);
+  CHECK(grammar.grids[0].rule.seam_misfit == summary["grids"][0]["seam_misfit"].get<double>());
+  CHECK(grammar.grids[0].rule.seam_misfit < 1e-6 * grammar.eps);
+  std::ifstream in(fence.grammar);
+  nlohmann::json document = nlohmann::json::parse(in);
+  document["grids"][0]["seam_misfit"] = -1.0;
+  const std::filesystem::path broken = folder / "broken.grammar.json";
+  std::ofstream(broken) << document.dump();
+  CHECK_THROWS_WITH(dg::read_grammar(broken), Catch::Contains("seam_misfit that is not a finite number >= 0"));
+  std::filesystem::remove_all(folder);
+}
