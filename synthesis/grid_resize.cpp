@@ -53,7 +53,7 @@ void check_counts(const GridRule& grid, const std::vector<int>& counts) {
 }  // namespace
 
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
-                         double weld_tolerance) {
+                         double eps) {
   check_counts(grid, counts);
   std::vector<std::vector<RigidTransform>> placements;
   std::size_t vertices = 0, triangles = 0;
@@ -83,7 +83,7 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
       seam_vertices.insert(seam_vertices.end(), open.begin(), open.end());
     }
   }
-  resolve_t_junctions(result, weld_tolerance, &seam_vertices);
+  resolve_t_junctions(result, grid_weld_tolerance(grid, eps), &seam_vertices);
   return merge_flat_faces(result);
 }
 

@@ -10,15 +10,15 @@
 namespace dg {
 
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
-/// range), welds seam vertices closer than `weld_tolerance` (model units; grid_weld_tolerance,
-/// grammar/grid_seams.h, for the grid's own misfit) and re-triangulates the flat
+/// range), welds seam vertices closer than grid_weld_tolerance (grammar/grid_seams.h: twice the
+/// grid's seam misfit, at least 1e-4 of the voxel size `eps`) and re-triangulates the flat
 /// faces the seams split (merge_flat_faces). Counts equal to the
 /// grid's own counts reproduce the exemplar. Every triangle keeps its piece triangle's material
 /// when all pieces carry materials (the result has none otherwise). Throws InputError when a count is out of range
 /// (below a direction's min_units or the grid's range) or the number of counts does not match
 /// the grid's dimension.
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
-                         double weld_tolerance);
+                         double eps);
 
 /// Assembles the points of a point-cloud grammar's grid pieces for `counts`, each piece placed
 /// as resize_grid places its triangles (normals turned with it when every piece has them; no

@@ -93,7 +93,7 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
   if (is_point_grammar(grammar))
     variant.points = resize_grid_points(grid.rule, grid.pieces, plan.grid_counts.front());
   else
-    variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), grid_weld_tolerance(grid.rule, grammar.eps));
+    variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), grammar.eps);
   for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
     variant.changed = variant.changed || plan.grid_counts.front()[i] != grid.rule.directions[i].count;
   return variant;

@@ -79,7 +79,7 @@ void facade_resize_rows(std::size_t triangles, bool skip_verify) {
   const double eps = facade.prepared.surface.eps();
   const auto pieces = dg::cut_grid_pieces(facade.prepared.model.mesh, grids.front(), eps);
   dg::Stopwatch stopwatch;
-  const dg::TriangleMesh resized = dg::resize_grid(grids.front(), pieces, {20, 20}, dg::grid_weld_tolerance(grids.front(), eps));
+  const dg::TriangleMesh resized = dg::resize_grid(grids.front(), pieces, {20, 20}, eps);
   const double resize_seconds = stopwatch.lap();
   fmt::print("\nResize of a {}-triangle facade 3x4 to 20 x 20: {:.2f} s ({} triangles).\n",
              facade.prepared.model.mesh.triangles.size(), resize_seconds, resized.triangles.size());

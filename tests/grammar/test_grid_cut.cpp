@@ -51,7 +51,7 @@ TEST_CASE("grid cut: a long bar's faces come back as one quad per cell", "[gramm
   // are flat faces split only by seams: merged again, any count gives a box of 12 triangles.
   for (const int count : {9, 12}) {
     CAPTURE(count);
-    const dg::TriangleMesh resized = dg::resize_grid(grid, pieces, {count}, dg::kSeamWeldFloorFraction * 0.1);
+    const dg::TriangleMesh resized = dg::resize_grid(grid, pieces, {count}, 0.1);
     CHECK(resized.triangles.size() == 12);
     CHECK(resized.positions.size() == 8);
     CHECK(dg::is_closed_and_oriented(resized));

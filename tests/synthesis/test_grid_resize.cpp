@@ -102,12 +102,11 @@ TEST_CASE("facade(5 x 4) with rooftop boxes: one column unit between them, and r
   const double second_x = (columns.cut + columns.pitch) * columns.direction.x();
   CHECK(std::min(first_x, second_x) > 7.5);
   CHECK(std::max(first_x, second_x) < 13.5);
-  const double weld = dg::kSeamWeldFloorFraction * g.eps;
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, weld), exemplar, g.eps);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, g.eps), exemplar, g.eps);
   // Three columns and six rows: the generator's facade with the first box where it stood and
   // the second two columns further on (both on a roof two rows higher).
   const auto larger = counts_for(g.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 6}});
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, larger, weld), facade_with_rooftop_boxes(7, 6, 6.0), g.eps);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, larger, g.eps), facade_with_rooftop_boxes(7, 6, 6.0), g.eps);
 }
 
 // A screw grid (spiral stairs): every added unit is the screw motion applied once more.
@@ -121,9 +120,8 @@ TEST_CASE("messy facade: damaged rows stay in the head, so added rows are clean 
   for (const dg::GridDirection& d : clean.grid.directions) CHECK(dg::min_units(d) == 0);
   const auto own = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 4}});
   const auto taller = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 7}});
-  const double weld = dg::kSeamWeldFloorFraction * messy.eps;
-  dg::TriangleMesh exemplar_copy = dg::resize_grid(messy.grid, messy.pieces, own, weld);
-  dg::TriangleMesh taller_copy = dg::resize_grid(messy.grid, messy.pieces, taller, weld);
+  dg::TriangleMesh exemplar_copy = dg::resize_grid(messy.grid, messy.pieces, own, messy.eps);
+  dg::TriangleMesh taller_copy = dg::resize_grid(messy.grid, messy.pieces, taller, messy.eps);
   const dg::CleaningReport own_damage = dg::clean_mesh(exemplar_copy);
   const dg::CleaningReport taller_damage = dg::clean_mesh(taller_copy);
   // Three more rows, and not one more doubled face or non-manifold edge.
@@ -133,7 +131,7 @@ TEST_CASE("messy facade: damaged rows stay in the head, so added rows are clean 
   CHECK(taller_copy.bounds().size().z() == Approx(exemplar_copy.bounds().size().z() + 9.0).margin(1e-6));
   // The rows cannot shrink below the two kept rows.
   const auto too_low = counts_for(messy.grid, {{Vec3(3, 0, 0), 3}, {Vec3(0, 0, 3), 1}});
-  CHECK_THROWS_AS(dg::resize_grid(messy.grid, messy.pieces, too_low, weld), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(messy.grid, messy.pieces, too_low, messy.eps), dg::InputError);
 
   // The kept units survive the grammar file.
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-kept-units-test");

@@ -61,16 +61,15 @@ TEST_CASE("corpus: the railing resized by -1 and +1 unit loses or gains one balu
   REQUIRE(grids[0].directions.size() == 1);
   const int own = grids[0].directions[0].count;
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(exemplar, grids[0], eps);
-  const double weld = dg::kSeamWeldFloorFraction * eps;
 
   // The grid's own count gives the exemplar back.
-  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {own}, weld);
+  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {own}, eps);
   CHECK(dg::test::hausdorff_distance(same, exemplar) < eps);
   CHECK(same.area() == Approx(exemplar.area()).epsilon(1e-3));
 
   for (int change : {-1, 1}) {
     CAPTURE(change);
-    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {own + change}, weld);
+    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {own + change}, eps);
     // One baluster more or less, at the same spacing, starting where the exemplar's start.
     const std::vector<double> xs = baluster_positions(resized);
     REQUIRE(xs.size() == static_cast<std::size_t>(8 + change));
@@ -109,7 +108,7 @@ TEST_CASE("corpus: the Kenney metal gate resized past its exemplar's counts stay
   for (const std::vector<int>& counts : {std::vector<int>{own[0] + 3, own[1]}, std::vector<int>{own[0], own[1] + 2}}) {
     CAPTURE(counts);
     dg::Model candidate;
-    candidate.mesh = dg::resize_grid(grids[0], pieces, counts, dg::kSeamWeldFloorFraction * eps);
+    candidate.mesh = dg::resize_grid(grids[0], pieces, counts, eps);
     const dg::VerifyReport report = dg::verify_models(dg::read_model(*gate), std::move(candidate));
     CHECK(report.similarity.fraction >= 0.995);
     CHECK(report.pass);

@@ -28,7 +28,7 @@ template <class Rule>
 void check_resize(const dg::ShapeGrammar& grammar, const std::vector<int>& counts, Rule rule, const dg::Model& expected) {
   REQUIRE(grammar.grids.size() == 1);
   const dg::TriangleMesh resized =
-      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFloorFraction * grammar.eps);
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, grammar.eps);
   REQUIRE(resized.has_materials());
   for (std::size_t t = 0; t < resized.triangles.size(); ++t) {
     const auto [a, b, c] = resized.corners(t);
@@ -51,7 +51,7 @@ TEST_CASE("materials: resizing the material fence keeps each surface's material"
   // Pieces without materials give a result without them.
   dg::GridWithPieces plain = grammar.grids[0];
   for (dg::GridPiece& piece : plain.pieces) piece.mesh.materials.clear();
-  CHECK_FALSE(dg::resize_grid(plain.rule, plain.pieces, {5}, dg::kSeamWeldFloorFraction * grammar.eps).has_materials());
+  CHECK_FALSE(dg::resize_grid(plain.rule, plain.pieces, {5}, grammar.eps).has_materials());
 }
 
 TEST_CASE("materials: a facade resized to 5 x 7 has glass in every window and oak in every door", "[synthesis][grid][materials]") {
@@ -64,7 +64,7 @@ TEST_CASE("materials: a facade resized to 5 x 7 has glass in every window and oa
   // Every window and door of the larger facade is there: 5 x 7 windows and 5 doors, each back
   // 1.2 x 1.5 and 1.4 x 2.6 m.
   const dg::TriangleMesh resized =
-      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFloorFraction * grammar.eps);
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, grammar.eps);
   CHECK(area_by_material(resized)[dg::test::kGlass] == Approx(5 * 7 * 1.2 * 1.5).epsilon(1e-9));
   CHECK(area_by_material(resized)[dg::test::kOak] == Approx(5 * 1.4 * 2.6).epsilon(1e-9));
 }
@@ -80,7 +80,7 @@ TEST_CASE("materials: windows painted on a flat wall come back whole in a resize
   std::vector<int> counts;  // two more cells each way (n cells are n - 1 units)
   for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(d.count + 2);
   const dg::TriangleMesh resized =
-      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, dg::kSeamWeldFloorFraction * grammar.eps);
+      dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, grammar.eps);
   REQUIRE(resized.has_materials());
   double glass = 0.0;
   for (std::size_t t = 0; t < resized.triangles.size(); ++t) {

@@ -89,7 +89,7 @@ void add_resize_command(CLI::App& app) {
       if (!options->quiet) fmt::print(stderr, "wrote {} ({} points)\n", options->output, result.positions.size());
       return;
     }
-    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, counts, grid_weld_tolerance(grid.rule, grammar.eps));
+    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, counts, grammar.eps);
     create_output_folder(output.parent_path());
     write_mesh_with_materials(output, result, grammar.materials);
     if (options->picture)
