@@ -2,8 +2,6 @@
 
 #include "geometry/topology.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -114,26 +112,6 @@ PreparedModel without_triangles(const PreparedModel& prepared, const std::vector
   return rest;
 }
 
-// The symmetric region of `t` on `surface` with every cell tested (not only those connected to
-// seeds), and its erosion by r.
-SymmetricRegion tested_region(const VoxelSurface& surface, const RigidTransform& t, const RegionOptions& matching) {
-  const CellMatcher matcher(surface, nullptr, matching);
-  const RigidTransform inverse = t.inverse();
-  std::vector<char> symmetric(surface.cell_count(), 0);
-  tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(surface.cell_count()),
-                    [&](std::uint32_t c) { symmetric[c] = matcher.symmetric(c, t, inverse) ? 1 : 0; });
-  SymmetricRegion region;
-  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
-    if (symmetric[c]) {
-      region.symmetric_cells.push_back(c);
-      region.symmetric_area += surface.area(c);
-    }
-  region.r_symmetric_cells = erode(surface, region.symmetric_cells, surface.r());
-  for (std::uint32_t c : region.r_symmetric_cells) region.r_symmetric_area += surface.area(c);
-  region.cells_tested = surface.cell_count();
-  return region;
-}
-
 }  // namespace
 
 ModelParts model_parts(const TriangleMesh& mesh) {
@@ -205,7 +183,7 @@ WholeParts whole_parts(const PreparedModel& prepared, const ModelParts& model, c
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) removed[t] = whole.kept[part_of[t]];
   whole.rest = without_triangles(prepared, removed);
   whole.motion = symmetry;
-  whole.motion.region = tested_region(whole.rest.surface, symmetry.transform, matching);
+  whole.motion.region = tested_symmetric_region(CellMatcher(whole.rest.surface, nullptr, matching), whole.rest.surface, symmetry.transform);
   return whole;
 }
 

@@ -1,5 +1,7 @@
 #include "symmetry/symmetric_region.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -289,6 +291,23 @@ SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface&
   for (std::uint32_t c : region.symmetric_cells) region.symmetric_area += surface.area(c);
   region.r_symmetric_cells = erode(surface, region.symmetric_cells, surface.r());
   for (std::uint32_t c : region.r_symmetric_cells) region.r_symmetric_area += surface.area(c);
+  return region;
+}
+
+SymmetricRegion tested_symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t) {
+  const RigidTransform inverse = t.inverse();
+  std::vector<char> symmetric(surface.cell_count(), 0);
+  tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(surface.cell_count()),
+                    [&](std::uint32_t c) { symmetric[c] = matcher.symmetric(c, t, inverse) ? 1 : 0; });
+  SymmetricRegion region;
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c)
+    if (symmetric[c]) {
+      region.symmetric_cells.push_back(c);
+      region.symmetric_area += surface.area(c);
+    }
+  region.r_symmetric_cells = erode(surface, region.symmetric_cells, surface.r());
+  for (std::uint32_t c : region.r_symmetric_cells) region.r_symmetric_area += surface.area(c);
+  region.cells_tested = surface.cell_count();
   return region;
 }
 

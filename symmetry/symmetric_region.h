@@ -94,6 +94,10 @@ struct SymmetricRegion {
 SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
                                  std::span<const std::uint32_t> seeds, bool fill_outliers);
 
+/// xi(T) with every cell of the surface tested in parallel (not only those connected to seeds),
+/// and its erosion xi_r(T).
+SymmetricRegion tested_symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t);
+
 /// Cells of `region` (ascending) whose intrinsic distance to any cell outside it exceeds r.
 std::vector<std::uint32_t> erode(const VoxelSurface& surface, const std::vector<std::uint32_t>& region, double r);
 

@@ -1,6 +1,7 @@
 // Seams of grid pieces that meet only approximately: measured, and welded within that distance.
 
 #include "grammar/grid_seams.h"
+#include "grammar/tolerance_hint.h"
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
@@ -80,9 +81,19 @@ TEST_CASE("corpus: the Scopia iron railing gives its 9 frames at a tolerance of 
   };
   // Exact matching: the hand-modelled scrolls and frames repeat only within about 0.2 eps, and
   // the planes fit 3 units.
-  const std::vector<dg::GridRule> exact = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  const dg::SymmetryResult exact_symmetries = dg::detect_symmetries(prepared);
+  const std::vector<dg::GridRule> exact = dg::find_grids(prepared, exact_symmetries);
   REQUIRE(frames(exact) != nullptr);
   CHECK(frames(exact)->directions[0].count < 9);
+  // analyze suggests the wider tolerance: the bar translation repeats 19 times and its
+  // r-symmetric area grows by more than a fifth of the surface.
+  std::vector<dg::GridWithPieces> exact_grids;
+  for (const dg::GridRule& g : exact) exact_grids.push_back({g, {}});
+  const std::optional<dg::ToleranceHint> hint = dg::tolerance_hint(prepared, exact_symmetries, exact_grids);
+  REQUIRE(hint.has_value());
+  CHECK(hint->repeats >= 18);
+  CHECK(hint->grid_units == frames(exact)->directions[0].count);
+  CHECK(hint->r_symmetric_wider > hint->r_symmetric_now + 0.2);
 
   dg::SymmetryOptions tolerant;
   tolerant.region.offset_tolerance_eps = 0.25;
@@ -107,6 +118,18 @@ TEST_CASE("corpus: the Scopia iron railing gives its 9 frames at a tolerance of 
   CHECK(welded.non_manifold_edges == 0);
 }
 
+TEST_CASE("corpus: no tolerance hint for the Blendswap radiator whose fins differ in shape", "[synthesis][grid][corpus]") {
+  const std::optional<std::filesystem::path> radiator = dg::test::corpus_file_if_present("meshes/furn-blendswap-radiator1/radiator1.obj");
+  if (!radiator) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*radiator);
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  std::vector<dg::GridWithPieces> grids;
+  for (const dg::GridRule& g : dg::find_grids(prepared, symmetries)) grids.push_back({g, {}});
+  // Its fin translation repeats 27 times over a grid of 2 units, but the fins' bevels differ in
+  // angle, not position: a wider position tolerance adds under 1 % of the surface.
+  CHECK_FALSE(dg::tolerance_hint(prepared, symmetries, grids).has_value());
+}
+
 TEST_CASE("analyze --tolerance: the summary and report give the tolerance and the grammar keeps the grid's seam misfit",
           "[synthesis][grid][tools]") {
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-tolerance-test");
@@ -114,6 +137,10 @@ TEST_CASE("analyze --tolerance: the summary and report give the tolerance and th
   REQUIRE(fence.run.status == 0);
   const nlohmann::json summary = nlohmann::json::parse(fence.run.output);
   CHECK(summary["tolerance"].get<double>() == 0.25);
+  const dg::test::CliRun symmetry = dg::test::run_cli(
+      "symmetry " + std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj -q --json --tolerance 0.2", folder);
+  REQUIRE(symmetry.status == 0);
+  CHECK(nlohmann::json::parse(symmetry.output)["tolerance"].get<double>() == 0.2);
   REQUIRE(summary["grids"].size() == 1);
   CHECK(summary["grids"][0]["counts"] == nlohmann::json::array({4}));
   std::ifstream report(folder / "fence_4.report.md");

@@ -13,6 +13,7 @@
 #include "grammar/grammar_file.h"
 #include "grammar/grid_rules.h"
 #include "grammar/grid_seams.h"
+#include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
 
 #include <fmt/core.h>
@@ -62,6 +63,7 @@ void add_analyze_command(CLI::App& app) {
       rule.seam_misfit = grid_seam_misfit(rule, pieces, grammar.eps);
       grammar.grids.push_back({std::move(rule), std::move(pieces)});
     }
+    const std::optional<ToleranceHint> hint = tolerance_hint(prepared, symmetries, grammar.grids);
     grammar_timings.push_back({"grid rules", stopwatch.lap()});
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries, {}, progress);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
@@ -77,7 +79,7 @@ void add_analyze_command(CLI::App& app) {
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
-                          folder / (stem + ".report.md"), {}};
+                          folder / (stem + ".report.md"), {}, hint};
     write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)

@@ -299,25 +299,17 @@ double match_tolerance(const AnalysisReport& report) {
   return report.prepared.model.is_point_cloud() ? region.cloud_offset_tolerance_eps : region.offset_tolerance_eps;
 }
 
-// A suggestion to widen --tolerance when, at the default, a translation repeats far more often
-// than any grid has units (repeats placed or modelled a little unevenly break the planes between
-// them); empty otherwise.
-std::string tolerance_hint(const AnalysisReport& report, std::string_view quote = "") {
-  if (report.prepared.model.is_point_cloud() || match_tolerance(report) != RegionOptions{}.offset_tolerance_eps) return "";
-  int units = 0;
-  for (const GridWithPieces& grid : report.grammar.grids)
-    for (const GridDirection& d : grid.rule.directions) units = std::max(units, d.count);
-  const std::vector<SymmetryFamily>& families = report.symmetries.families;
-  std::size_t most = families.size();
-  for (std::size_t f = 0; f < families.size(); ++f)
-    if (families[f].kind == "translation" && (most == families.size() || families[f].count > families[most].count)) most = f;
-  if (most == families.size() || families[most].count < static_cast<std::size_t>(2 * units + 2)) return "";
+// The suggestion to widen --tolerance, when analyze made one; empty otherwise.
+std::string tolerance_hint_text(const AnalysisReport& report, std::string_view quote = "") {
+  if (!report.tolerance_hint) return "";
+  const ToleranceHint& hint = *report.tolerance_hint;
   return fmt::format(
-      "translation F{} repeats {} times, but {}: if its repeats were placed or modelled a little unevenly, "
-      "{}--tolerance 0.25{} may find more",
-      most + 1, families[most].count,
-      units == 0 ? std::string("no grid was found") : fmt::format("no grid has more than {} unit{}", units, units == 1 ? "" : "s"),
-      quote, quote);
+      "translation F{} repeats {} times, but {}; its repeats differ a little: at {}--tolerance {}{} its r-symmetric area "
+      "grows from {:.1f} % to {:.1f} % of the surface, which may give more units",
+      hint.family + 1, hint.repeats,
+      hint.grid_units == 0 ? std::string("no grid was found")
+                           : fmt::format("no grid has more than {} unit{}", hint.grid_units, hint.grid_units == 1 ? "" : "s"),
+      quote, kSuggestedToleranceEps, quote, 100.0 * hint.r_symmetric_now, 100.0 * hint.r_symmetric_wider);
 }
 
 }  // namespace
@@ -339,7 +331,7 @@ std::string analysis_text(const AnalysisReport& report) {
                          grid_motion_text(d), vec(d.direction), d.pitch, d.count, d.count == 1 ? "" : "s", d.cut,
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
-  if (const std::string hint = tolerance_hint(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
+  if (const std::string hint = tolerance_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
@@ -449,7 +441,7 @@ void write_analysis_report(const AnalysisReport& report) {
         "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
         "area){}.\n\n",
         materials_hint(report.prepared, "`"));
-  if (const std::string hint = tolerance_hint(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
+  if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   for (const GridWithPieces& grid : report.grammar.grids) {
     md += fmt::format(
         "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",

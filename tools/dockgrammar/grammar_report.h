@@ -5,11 +5,13 @@
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
+#include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ struct AnalysisReport {
   std::filesystem::path grammar_path;
   std::filesystem::path report_path;
   std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
+  std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
 };
 
 /// Short readable summary for stdout.
