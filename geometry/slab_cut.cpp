@@ -1,5 +1,7 @@
 #include "geometry/slab_cut.h"
 
+#include "geometry/cell_key.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -113,19 +115,10 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
 
 std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, const std::vector<char>* only) {
   const double cell = std::max(tolerance, 1e-300) * 4.0;
-  auto key = [&](const Vec3& p) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / cell)),
-                                       static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                                       static_cast<std::int64_t>(std::floor(p.z() / cell))};
-  };
-  struct KeyHash {
-    std::size_t operator()(const std::array<std::int64_t, 3>& k) const {
-      return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-    }
-  };
+  auto key = [&](const Vec3& p) { return cell_key(p, cell); };
   // Kept vertices per grid cell as intrusive lists: bucket head, then `next` per kept vertex.
   constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
-  std::unordered_map<std::array<std::int64_t, 3>, std::uint32_t, KeyHash> head;
+  std::unordered_map<CellKey, std::uint32_t, CellKeyHash> head;
   head.reserve(mesh.positions.size());
   std::vector<std::uint32_t> next;
   std::vector<std::uint32_t> remap(mesh.positions.size());

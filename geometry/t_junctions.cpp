@@ -1,5 +1,6 @@
 #include "geometry/t_junctions.h"
 
+#include "geometry/cell_key.h"
 #include "geometry/slab_cut.h"
 
 #include <algorithm>
@@ -57,14 +58,6 @@ std::vector<std::uint32_t> seam_triangles(const TriangleMesh& mesh, const std::v
   return triangles;
 }
 
-using CellKey = std::array<std::int64_t, 3>;
-
-struct CellKeyHash {
-  std::size_t operator()(const CellKey& k) const {
-    return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-  }
-};
-
 // The ends of boundary edges in a spatial hash with cells at least `cell` wide.
 class BoundaryVertexGrid {
  public:
@@ -76,10 +69,7 @@ class BoundaryVertexGrid {
     for (std::uint32_t v : vertices_) buckets_[key(mesh.positions[v])].push_back(v);
   }
 
-  CellKey key(const Vec3& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
-            static_cast<std::int64_t>(std::floor(p.z() / cell_))};
-  }
+  CellKey key(const Vec3& p) const { return cell_key(p, cell_); }
 
   // Calls visit(v) for every boundary vertex v in the cells overlapping the box [lo, hi]
   // (or for all of them when that box spans more cells than there are vertices).

@@ -1,5 +1,7 @@
 #include "grammar/seam_curve.h"
 
+#include "geometry/cell_key.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,14 +9,6 @@
 
 namespace dg {
 namespace {
-
-using CellKey = std::array<std::int64_t, 3>;
-
-struct CellHash {
-  std::size_t operator()(const CellKey& k) const {
-    return static_cast<std::size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-  }
-};
 
 double distance_to_segment(const Vec3& p, const Segment& s) {
   const Vec3 d = s[1] - s[0];
@@ -26,11 +20,8 @@ double distance_to_segment(const Vec3& p, const Segment& s) {
 // The largest distance from a sample of `a` (segment ends and midpoints) to the nearest
 // segment of `b`, or infinity when some sample has no segment of `b` within `limit`.
 double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
-  auto key = [&](const Vec3& p) {
-    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
-  };
-  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
+  auto key = [&](const Vec3& p) { return cell_key(p, cell); };
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid;
   for (std::uint32_t i = 0; i < b.size(); ++i) {
     const CellKey lo = key(b[i][0].cwiseMin(b[i][1]) - Vec3::Constant(limit));
     const CellKey hi = key(b[i][0].cwiseMax(b[i][1]) + Vec3::Constant(limit));

@@ -28,7 +28,7 @@ void check_resized_verifies(const dg::PreparedModel& prepared, const dg::GridRul
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, prepared.surface.eps());
   dg::Model exemplar, resized;
   exemplar.mesh = prepared.model.mesh;
-  resized.mesh = dg::resize_grid(grid, pieces, {count}, 1e-4 * prepared.surface.eps());
+  resized.mesh = dg::resize_grid(grid, pieces, {count}, prepared.surface.eps());
   const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(resized));
   INFO(count << " units: " << report.similarity.similar << " of " << report.similarity.samples << " samples r-similar");
   CHECK(report.pass);
@@ -74,7 +74,7 @@ TEST_CASE("a row of parts gives a 1-grid that keeps the odd parts in its gaps wh
 
   // Its pieces rebuild the exemplar, and two more units stay r-similar to it.
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, prepared.surface.eps());
-  const dg::TriangleMesh own = dg::resize_grid(grid, pieces, {row.count}, 1e-4 * prepared.surface.eps());
+  const dg::TriangleMesh own = dg::resize_grid(grid, pieces, {row.count}, prepared.surface.eps());
   CHECK(own.area() == Approx(prepared.model.mesh.area()).epsilon(1e-3));
   check_resized_verifies(prepared, grid, row.count + 2);
 }

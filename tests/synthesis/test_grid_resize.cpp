@@ -71,17 +71,17 @@ void check_same_shape(const dg::TriangleMesh& result, const dg::TriangleMesh& ex
 TEST_CASE("resize fence(4) by five units gives the generator's fence(9)", "[synthesis][grid]") {
   const Grammar g = grammar_of("fence", {{"n", 4}});
   const auto counts = counts_for(g.grid, {{Vec3(2, 0, 0), 9}});
-  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, 1e-6 * g.eps);
+  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, g.eps);
   check_same_shape(resized, dg::assets::make_asset("fence", {{"n", 9}}).mesh, g.eps);
   // The exemplar's own counts reproduce it.
   const auto own = counts_for(g.grid, {{Vec3(2, 0, 0), 4}});
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, 1e-6 * g.eps), dg::assets::make_asset("fence", {{"n", 4}}).mesh, g.eps);
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, own, g.eps), dg::assets::make_asset("fence", {{"n", 4}}).mesh, g.eps);
 }
 
 TEST_CASE("resize facade(3 x 4) to 5 x 7 gives the generator's facade(5, 7)", "[synthesis][grid]") {
   const Grammar g = grammar_of("facade", {{"columns", 3}, {"rows", 4}});
   const auto counts = counts_for(g.grid, {{Vec3(3, 0, 0), 5}, {Vec3(0, 0, 3), 7}});
-  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, 1e-6 * g.eps);
+  const dg::TriangleMesh resized = dg::resize_grid(g.grid, g.pieces, counts, g.eps);
   check_same_shape(resized, dg::assets::make_asset("facade", {{"columns", 5}, {"rows", 7}}).mesh, g.eps);
 }
 
@@ -156,11 +156,11 @@ TEST_CASE("resize spiral stairs(12) to 16 steps gives the generator's stairs(16)
   const Grammar g = grammar_of("spiral_stairs", {{"steps", 12}});
   REQUIRE(g.grid.directions.size() == 1);
   REQUIRE(g.grid.directions[0].count == 12);
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, {12}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 12}}).mesh,
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {12}, g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 12}}).mesh,
                    g.eps);
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, {16}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 16}}).mesh,
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {16}, g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 16}}).mesh,
                    g.eps);
-  check_same_shape(dg::resize_grid(g.grid, g.pieces, {7}, 1e-6 * g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 7}}).mesh,
+  check_same_shape(dg::resize_grid(g.grid, g.pieces, {7}, g.eps), dg::assets::make_asset("spiral_stairs", {{"steps", 7}}).mesh,
                    g.eps);
 }
 
@@ -182,16 +182,16 @@ TEST_CASE("a screw grid survives the grammar file", "[synthesis][grid]") {
   const dg::GridDirection& d = read.grids[0].rule.directions[0];
   CHECK(d.motion.rotation.isApprox(g.grid.directions[0].motion.rotation, 1e-9));
   CHECK(d.motion.translation.isApprox(g.grid.directions[0].motion.translation, 1e-9));
-  check_same_shape(dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {14}, 1e-6 * g.eps),
+  check_same_shape(dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {14}, g.eps),
                    dg::assets::make_asset("spiral_stairs", {{"steps", 14}}).mesh, g.eps);
   std::filesystem::remove_all(folder);
 }
 
 TEST_CASE("resize rejects counts out of range and a wrong number of counts", "[synthesis][grid]") {
   const Grammar g = grammar_of("fence", {{"n", 4}});
-  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {-1}, 1e-9), dg::InputError);
-  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {g.grid.max_count + 1}, 1e-9), dg::InputError);
-  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {3, 3}, 1e-9), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {-1}, g.eps), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {g.grid.max_count + 1}, g.eps), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grid(g.grid, g.pieces, {3, 3}, g.eps), dg::InputError);
 }
 
 TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") {
@@ -212,7 +212,7 @@ TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") 
   REQUIRE(read.grids.size() == 1);
   CHECK(read.grids[0].rule.directions[0].count == 4);
   CHECK(read.grids[0].pieces.size() == g.pieces.size());
-  const dg::TriangleMesh resized = dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {9}, 1e-6 * g.eps);
+  const dg::TriangleMesh resized = dg::resize_grid(read.grids[0].rule, read.grids[0].pieces, {9}, g.eps);
   CHECK(dg::is_closed_and_oriented(resized));
 
   // Truncated file, wrong version, missing sidecar: InputError naming the file.
