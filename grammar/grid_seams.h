@@ -15,9 +15,9 @@ namespace dg {
 /// The largest distance (model units) between the seams that a resize of `grid` joins: for each
 /// direction, the open edges of the pieces lying on the planes where unit meets unit, unit meets
 /// tail and (when the count may drop to the units head and tail keep) head meets tail, compared
-/// as seam curves (seam_misfit, grammar/seam_curve.h) after moving one side into place. Seams
-/// whose points have no partner within eps are left out (they do not close at any weld distance
-/// worth using). 0 for point-cloud pieces.
+/// as seam curves (seam_misfit, grammar/seam_curve.h) after moving one side into place. A joint
+/// where some point of either seam has no partner within eps is left out (no weld distance worth
+/// using closes it). 0 for point-cloud pieces.
 double grid_seam_misfit(const GridRule& grid, const std::vector<GridPiece>& pieces, double eps);
 
 /// Distance (model units) within which resize welds the seam vertices of `grid`'s pieces: twice
