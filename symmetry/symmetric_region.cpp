@@ -10,11 +10,15 @@
 
 namespace dg {
 
+CellTolerances cell_tolerances(const RegionOptions& options, bool point_cloud) {
+  return point_cloud ? CellTolerances{options.cloud_angle_tolerance_degrees, options.cloud_offset_tolerance_eps}
+                     : CellTolerances{options.angle_tolerance_degrees, options.offset_tolerance_eps};
+}
+
 CellMatcher::CellMatcher(const VoxelSurface& surface, const PointCloud* cloud, const RegionOptions& options)
     : surface_(surface),
-      cos_tolerance_(std::cos((cloud ? options.cloud_angle_tolerance_degrees : options.angle_tolerance_degrees) *
-                              std::numbers::pi / 180.0)),
-      offset_tolerance_((cloud ? options.cloud_offset_tolerance_eps : options.offset_tolerance_eps) * surface.eps()),
+      cos_tolerance_(std::cos(cell_tolerances(options, cloud != nullptr).angle_degrees * std::numbers::pi / 180.0)),
+      offset_tolerance_(cell_tolerances(options, cloud != nullptr).offset_eps * surface.eps()),
       angle_tolerance_degrees_(options.angle_tolerance_degrees),
       max_bend_degrees_(options.max_bend_degrees),
       curved_deviation_(options.curved_deviation_eps * surface.eps()),

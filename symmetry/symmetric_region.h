@@ -28,6 +28,13 @@ struct RegionOptions {
   double cloud_offset_tolerance_eps = 0.25;
 };
 
+/// The direction and position tolerances cells of a mesh or of a point cloud are matched with.
+struct CellTolerances {
+  double angle_degrees = 0.0;
+  double offset_eps = 0.0;
+};
+CellTolerances cell_tolerances(const RegionOptions& options, bool point_cloud);
+
 /// Cell of the voxel holding point p (model units), or the occupied voxel of the 3x3x3 block
 /// around it whose centre is nearest (the first in x, y, z block order on ties); -1 if none.
 std::int64_t nearest_cell(const VoxelSurface& surface, const Vec3& p);

@@ -293,10 +293,9 @@ std::string materials_hint(const PreparedModel& prepared, std::string_view quote
       quote);
 }
 
-// Position tolerance of cell matching that the symmetries were found with, eps.
-double match_tolerance(const AnalysisReport& report) {
-  const RegionOptions& region = report.symmetries.region;
-  return report.prepared.model.is_point_cloud() ? region.cloud_offset_tolerance_eps : region.offset_tolerance_eps;
+// Tolerances of cell matching that the symmetries were found with.
+CellTolerances match_tolerances(const AnalysisReport& report) {
+  return cell_tolerances(report.symmetries.region, report.prepared.model.is_point_cloud());
 }
 
 // The suggestion to widen --tolerance, when analyze made one; empty otherwise.
@@ -390,7 +389,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
-          {"tolerance", match_tolerance(report)},
+          {"tolerance", match_tolerances(report).offset_eps},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
                                                  {"points_per_voxel", points_per_voxel(report.prepared)}}
                                 : nlohmann::json(nullptr)},
@@ -429,9 +428,7 @@ void write_analysis_report(const AnalysisReport& report) {
                       c.duplicate_triangles, c.boundary_edges, c.non_manifold_edges, c.components, c.t_junctions_split);
   md += fmt::format("Cells match when the planes and feature lines of one, moved, lie within {:.3g}° and {:.3g} eps "
                     "of the other's (`--tolerance`).\n\n",
-                    prepared.model.is_point_cloud() ? report.symmetries.region.cloud_angle_tolerance_degrees
-                                                    : report.symmetries.region.angle_tolerance_degrees,
-                    match_tolerance(report));
+                    match_tolerances(report).angle_degrees, match_tolerances(report).offset_eps);
   md += materials_paragraph(prepared);
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20);

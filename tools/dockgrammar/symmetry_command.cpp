@@ -39,7 +39,7 @@ void add_symmetry_command(CLI::App& app) {
       out["model"] = prepared.model.source_path;
       out["r"] = prepared.surface.r();
       out["eps"] = prepared.surface.eps();
-      out["tolerance"] = prepared.model.is_point_cloud() ? result.region.cloud_offset_tolerance_eps : result.region.offset_tolerance_eps;
+      out["tolerance"] = cell_tolerances(result.region, prepared.model.is_point_cloud()).offset_eps;
       for (const StageTiming& t : prepared.timings) out["timings_s"][t.stage] = t.seconds;
       fmt::print("{}\n", out.dump(2));
     } else {
