@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace dg {
@@ -199,6 +200,24 @@ std::vector<CloudCell> fit_cloud_cells(const PointCloud& cloud, const VoxelSurfa
       }
   });
   return result;
+}
+
+std::vector<Vec3> cell_plane_normals(const PointCloud& cloud, const VoxelSurface& surface) {
+  std::vector<Vec3> normals(cloud.positions.size(), Vec3::UnitZ());
+  tbb::parallel_for(std::size_t{0}, cloud.positions.size(), [&](std::size_t i) {
+    const Vec3& p = cloud.positions[i];
+    const std::int64_t cell = surface.find(surface.voxel_of(p));
+    if (cell < 0) return;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const CellPlane& plane : surface.planes(static_cast<std::uint32_t>(cell))) {
+      const double d = std::abs(plane.normal.dot(p) - plane.offset);
+      if (d < nearest) {
+        nearest = d;
+        normals[i] = plane.normal;
+      }
+    }
+  });
+  return normals;
 }
 
 }  // namespace dg

@@ -40,4 +40,9 @@ struct CloudCell {
 std::vector<CloudCell> fit_cloud_cells(const PointCloud& cloud, const VoxelSurface& surface,
                                        const CloudCellOptions& options = {});
 
+/// A unit normal per point of `cloud` from the fitted planes of `surface` (built from it): the
+/// plane of the point's cell it lies closest to. Creases keep each side's own normal, which a
+/// fit to the point's nearest neighbours would blend. Signs as the planes' (unoriented).
+std::vector<Vec3> cell_plane_normals(const PointCloud& cloud, const VoxelSurface& surface);
+
 }  // namespace dg

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace dg {
 namespace {
@@ -43,6 +44,19 @@ Vec3 half_plane_direction(const std::vector<Vec3>& points, const CellPlane& plan
   return sum > 0.0 ? across : Vec3(-across);
 }
 
+// The frame of a crease between planes a and b through `point` running along `tangent`, from the
+// half-planes' directions (see half_plane_direction); empty when either shows no points there.
+std::optional<Keypoint> crease_frame(const std::vector<Vec3>& points, const CellPlane& a, const CellPlane& b, const Vec3& point,
+                                     const Vec3& tangent, double tolerance, double reach, std::size_t min_points) {
+  const Vec3 wa = half_plane_direction(points, a, b, point, tangent, tolerance, reach, min_points);
+  const Vec3 wb = half_plane_direction(points, b, a, point, tangent, tolerance, reach, min_points);
+  if (wa.isZero() || wb.isZero()) return std::nullopt;
+  const Vec3 normal = -(wa + wb).normalized();
+  Keypoint frame{point, tangent, normal, tangent.cross(normal), {}};
+  frame.descriptor.dihedral_degrees = std::acos(std::clamp(wa.dot(wb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  return frame;
+}
+
 }  // namespace
 
 std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurface& surface, const CloudKeypointOptions& options) {
@@ -64,19 +78,46 @@ std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurfac
         const Vec3 direction = planes[a].normal.cross(planes[b].normal).normalized();
         Keypoint found{};
         int sides = 0;
-        for (const Vec3& tangent : {direction, Vec3(-direction)}) {
-          const Vec3 wa = half_plane_direction(points, planes[a], planes[b], corner, tangent, tolerance, reach, options.min_side_points);
-          const Vec3 wb = half_plane_direction(points, planes[b], planes[a], corner, tangent, tolerance, reach, options.min_side_points);
-          if (wa.isZero() || wb.isZero()) continue;
-          ++sides;
-          const Vec3 normal = -(wa + wb).normalized();
-          found = {corner, tangent, normal, tangent.cross(normal), {}};
-          found.descriptor.dihedral_degrees = std::acos(std::clamp(wa.dot(wb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
-        }
+        for (const Vec3& tangent : {direction, Vec3(-direction)})
+          if (const auto frame = crease_frame(points, planes[a], planes[b], corner, tangent, tolerance, reach, options.min_side_points)) {
+            ++sides;
+            found = *frame;
+          }
         if (sides == 1) keypoints.push_back(found);
       }
   }
   return keypoints;
+}
+
+std::vector<Keypoint> cloud_crease_samples(const PointCloud& cloud, const VoxelSurface& surface, const CloudKeypointOptions& options,
+                                           double min_crease_angle_degrees) {
+  std::vector<Keypoint> samples;
+  const double eps = surface.eps();
+  const double tolerance = options.inlier_tolerance_eps * eps;
+  const double reach = 1.8 * eps;
+  const double max_cos = std::cos(min_crease_angle_degrees * std::numbers::pi / 180.0);
+  for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
+    const auto planes = surface.planes(c);
+    if (planes.size() < 2) continue;
+    std::vector<Vec3> points;
+    for (std::size_t a = 0; a < planes.size(); ++a)
+      for (std::size_t b = a + 1; b < planes.size(); ++b) {
+        if (std::abs(planes[a].normal.dot(planes[b].normal)) > max_cos) continue;
+        const Vec3 direction = planes[a].normal.cross(planes[b].normal).normalized();
+        // The line's point nearest the voxel centre: both plane equations, and no step along it.
+        Mat3 system;
+        system.row(0) = planes[a].normal.transpose();
+        system.row(1) = planes[b].normal.transpose();
+        system.row(2) = direction.transpose();
+        const Vec3 centre = surface.centre(c);
+        const Vec3 point = system.partialPivLu().solve(Vec3(planes[a].offset, planes[b].offset, direction.dot(centre)));
+        if (surface.voxel_of(point) != surface.coord(c)) continue;
+        if (points.empty()) points = nearby_points(cloud, surface, surface.coord(c));
+        if (const auto frame = crease_frame(points, planes[a], planes[b], point, direction, tolerance, reach, options.min_side_points))
+          samples.push_back(*frame);
+      }
+  }
+  return samples;
 }
 
 }  // namespace dg

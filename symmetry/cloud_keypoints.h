@@ -26,4 +26,14 @@ struct CloudKeypointOptions {
 std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurface& surface,
                                       const CloudKeypointOptions& options = {});
 
+/// Samples along the creases of a point cloud's voxel surface, the cloud's counterpart of
+/// feature-line samples: for each cell and each pair of its fitted planes meeting at more than
+/// `min_crease_angle_degrees` whose line passes through the voxel, the point of that line
+/// nearest the voxel's centre, framed like a keypoint (tangent along the line, normal away from
+/// the wedge both planes' points show along it, dihedral = the wedge's opening angle). Cells
+/// where a plane shows no points along the line are left out. Deterministic, in cell order.
+std::vector<Keypoint> cloud_crease_samples(const PointCloud& cloud, const VoxelSurface& surface,
+                                           const CloudKeypointOptions& options = {},
+                                           double min_crease_angle_degrees = 20.0);
+
 }  // namespace dg

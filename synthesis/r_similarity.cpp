@@ -1,6 +1,7 @@
 #include "synthesis/r_similarity.h"
 
 #include "geometry/errors.h"
+#include "geometry/cloud_statistics.h"
 #include "geometry/surface_sampling.h"
 #include "symmetry/candidates.h"
 #include "synthesis/r_similarity_index.h"
@@ -29,20 +30,26 @@ Mat3 frame_of(const Vec3& tangent, const Vec3& normal, const Vec3& binormal) {
   return frame;
 }
 
-std::vector<Anchor> keypoint_anchors(const FeatureLines& lines) {
+// Feature-line ends of a mesh, corners of a cloud.
+std::vector<Anchor> keypoint_anchors(const SimilarityInput& input) {
   std::vector<Anchor> anchors;
-  for (const Keypoint& k : feature_keypoints(lines))
+  const std::vector<Keypoint> line_ends = input.feature_lines ? feature_keypoints(*input.feature_lines) : std::vector<Keypoint>{};
+  for (const Keypoint& k : input.feature_lines ? std::span<const Keypoint>(line_ends) : input.cloud_keypoints)
     anchors.push_back({k.position, frame_of(k.tangent, k.normal, k.binormal), k.descriptor});
   return anchors;
 }
 
-// Feature samples in both tangent directions.
-std::vector<Anchor> sample_anchors(const FeatureLines& lines) {
+// Feature samples (a cloud: crease samples) in both tangent directions.
+std::vector<Anchor> sample_anchors(const SimilarityInput& input) {
   std::vector<Anchor> anchors;
-  for (const FeatureSample& s : lines.samples) {
-    anchors.push_back({s.position, frame_of(s.tangent, s.normal, s.binormal), s.descriptor});
-    anchors.push_back({s.position, frame_of(-s.tangent, s.normal, -s.binormal), s.descriptor});
-  }
+  auto add = [&](const Vec3& position, const Vec3& tangent, const Vec3& normal, const Vec3& binormal,
+                 const FeatureDescriptor& descriptor) {
+    anchors.push_back({position, frame_of(tangent, normal, binormal), descriptor});
+    anchors.push_back({position, frame_of(-tangent, normal, -binormal), descriptor});
+  };
+  if (input.feature_lines)
+    for (const FeatureSample& s : input.feature_lines->samples) add(s.position, s.tangent, s.normal, s.binormal, s.descriptor);
+  for (const Keypoint& k : input.cloud_creases) add(k.position, k.tangent, k.normal, k.binormal, k.descriptor);
   return anchors;
 }
 
@@ -85,23 +92,48 @@ struct SampleOutcome {
   long cached = -1;                     // index of the reused motion that matched
 };
 
+// A cloud point's disk radius in distances to its 4th nearest point: about 14 points in a full
+// disk, so that a location at an edge has no point within the radius on its side only rarely.
+constexpr double kSplatSpacings = 2.0;
+// Share of a cloud ball's samples that may miss the other surface (gaps at corners).
+constexpr double kCloudMissingFraction = 0.02;
+// Two noisy clouds: the tolerance covers this many standard deviations of the difference of
+// their noise (about 5 in 10000 samples beyond it).
+constexpr double kNoiseTolerance = 3.5;
+
+// The surface index of one side: dense samples at spacing_r * r, queries up to eps = r / 4.
+SurfaceIndex make_index(const SimilarityInput& input, double r, const RSimilarityOptions& options, std::uint64_t seed) {
+  const double eps = r / 4.0;
+  if (input.mesh) return SurfaceIndex(*input.mesh, options.spacing_r * r, r, eps, seed);
+  return SurfaceIndex(*input.cloud, std::min(eps, kSplatSpacings * typical_point_spacing(*input.cloud, eps)),
+                      options.spacing_r * r, r, eps);
+}
+
 class Matcher {
  public:
   Matcher(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r, const RSimilarityOptions& options)
       : options_(options),
         r_(r),
-        exemplar_index_(exemplar.mesh, options.spacing_r * r, r, r / 4.0, options.seed),
-        candidate_index_(candidate.mesh, options.spacing_r * r, r, r / 4.0, options.seed + 1),
-        candidate_keypoints_(keypoint_anchors(candidate.feature_lines)),
-        candidate_samples_(sample_anchors(candidate.feature_lines)),
-        exemplar_keypoints_(keypoint_anchors(exemplar.feature_lines)),
-        exemplar_samples_(sample_anchors(exemplar.feature_lines)) {
+        exemplar_index_(make_index(exemplar, r, options, options.seed)),
+        candidate_index_(make_index(candidate, r, options, options.seed + 1)),
+        candidate_keypoints_(keypoint_anchors(candidate)),
+        candidate_samples_(sample_anchors(candidate)),
+        exemplar_keypoints_(keypoint_anchors(exemplar)),
+        exemplar_samples_(sample_anchors(exemplar)) {
     const double eps = r / 4.0;
     tolerances_.r = r_;
     tolerances_.tolerance = std::min(options.tolerance_eps, 1.0) * eps;
+    if (exemplar.cloud) {
+      const double noise = std::hypot(typical_point_noise(*exemplar.cloud, eps), typical_point_noise(*candidate.cloud, eps));
+      tolerances_.tolerance = std::min(eps, std::max(tolerances_.tolerance, kNoiseTolerance * noise));
+    }
     tolerances_.min_cos = std::cos(options.normal_tolerance_degrees * std::numbers::pi / 180.0);
     tolerances_.icp_cutoff = eps;
     tolerances_.icp_iterations = options.icp_iterations;
+    if (exemplar.cloud) {
+      tolerances_.max_missing_fraction = kCloudMissingFraction;
+      tolerances_.min_cos = 0.0;  // any disk within the tolerance is surface: fitted normals blur at creases
+    }
     probe_cutoff_ = std::min(2.0 * tolerances_.tolerance, eps);
     sort_by_dihedral(exemplar_keypoints_);
     sort_by_dihedral(exemplar_samples_);
@@ -236,21 +268,39 @@ class Matcher {
     return std::all_of(ball.begin(), ball.end(), [&](std::uint32_t i) {
       const SurfacePoint& p = index.samples()[i];
       return std::abs((p.position - y.position).dot(y.normal)) <= tolerances_.tolerance &&
-             p.normal.dot(y.normal) >= tolerances_.min_cos;
+             index.normals_agree(p.normal, y.normal, tolerances_.min_cos);
     });
+  }
+
+  // True when `ball` fills the disk of radius r around x: for a mesh, 80 % of the samples a full
+  // disk holds; for a cloud, whose density is unknown, samples reach 0.85 r from x and their
+  // centroid lies within 0.15 r of it.
+  bool fills_disk(const SurfacePoint& x, const std::vector<std::uint32_t>& ball) const {
+    const std::vector<SurfacePoint>& samples = exemplar_index_.samples();
+    if (!exemplar_index_.is_cloud()) {
+      const double h = options_.spacing_r * r_;
+      return static_cast<double>(ball.size()) >= 0.8 * std::numbers::pi * r_ * r_ / (h * h);
+    }
+    if (ball.empty()) return false;
+    Vec3 centroid = Vec3::Zero();
+    double reach = 0.0;
+    for (std::uint32_t i : ball) {
+      centroid += samples[i].position;
+      reach = std::max(reach, (samples[i].position - x.position).norm());
+    }
+    centroid /= static_cast<double>(ball.size());
+    return reach >= 0.85 * r_ && (centroid - x.position).norm() <= 0.15 * r_;
   }
 
   // A point of the exemplar whose intrinsic r-neighbourhood is one full flat disk, for step 3:
   // tried at up to 1024 dense samples picked in a fixed pseudo-random order.
   void find_flat_disk() {
     const std::vector<SurfacePoint>& samples = exemplar_index_.samples();
-    const double h = options_.spacing_r * r_;
-    const double full_count = std::numbers::pi * r_ * r_ / (h * h);
     std::vector<std::uint32_t> ball;
     for (std::size_t k = 0; k < std::min<std::size_t>(1024, samples.size()); ++k) {
       const SurfacePoint& x = samples[splitmix64(k) % samples.size()];
       if (!exemplar_index_.gather_connected(x.position, x.normal, r_, tolerances_.tolerance, tolerances_.min_cos, ball) ||
-          static_cast<double>(ball.size()) < 0.8 * full_count)
+          !fills_disk(x, ball))
         continue;
       if (is_flat(exemplar_index_, x, ball)) {
         flat_disk_ = x;
@@ -268,13 +318,28 @@ class Matcher {
   std::optional<SurfacePoint> flat_disk_;
 };
 
-// Area-uniform test points on the mesh, from one seeded generator.
-std::vector<SurfacePoint> test_points(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
-  const PointCloud cloud = sample_surface(mesh, count, seed);
+// Area-uniform test points on a mesh, or points of a cloud picked at random (with repeats),
+// from one seed.
+std::vector<SurfacePoint> test_points(const SimilarityInput& input, std::size_t count, std::uint64_t seed) {
   std::vector<SurfacePoint> points;
+  if (input.cloud) {
+    const std::vector<Vec3>& positions = input.cloud->positions;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t k = splitmix64(seed ^ splitmix64(i)) % positions.size();
+      points.push_back({positions[k], input.cloud->normals[k]});
+    }
+    return points;
+  }
+  const PointCloud cloud = sample_surface(*input.mesh, count, seed);
   points.reserve(cloud.positions.size());
   for (std::size_t i = 0; i < cloud.positions.size(); ++i) points.push_back({cloud.positions[i], cloud.normals[i]});
   return points;
+}
+
+// True when the side holds a mesh with triangles or a cloud with points, not both.
+bool usable(const SimilarityInput& input) {
+  if (input.mesh) return !input.cloud && input.feature_lines && !input.mesh->triangles.empty();
+  return input.cloud && !input.cloud->positions.empty();
 }
 
 // Motion indices by hits (descending), then insertion order.
@@ -289,8 +354,8 @@ std::vector<std::size_t> usage_order(const std::vector<Motion>& motions) {
 
 RSimilarityResult estimate_r_similarity(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r,
                                         const RSimilarityOptions& options, const ProgressCallback& progress) {
-  if (exemplar.mesh.triangles.empty() || candidate.mesh.triangles.empty())
-    throw InputError("r-similarity needs triangle meshes");
+  if (!usable(exemplar) || !usable(candidate) || !exemplar.mesh != !candidate.mesh)
+    throw InputError("r-similarity needs two triangle meshes or two point clouds");
   if (!(r > 0.0) || !std::isfinite(r)) throw InputError("r-similarity needs a positive radius r");
   if (options.samples == 0 || options.batch_size == 0 || !(options.spacing_r > 0.0) || !(options.tolerance_eps > 0.0))
     throw InputError("r-similarity options: samples, batch size, spacing and tolerance must be positive");
@@ -302,7 +367,7 @@ RSimilarityResult estimate_r_similarity(const SimilarityInput& exemplar, const S
   result.dense_samples_exemplar = matcher.exemplar_index().samples().size();
   result.dense_samples_candidate = matcher.candidate_index().samples().size();
 
-  const std::vector<SurfacePoint> points = test_points(candidate.mesh, options.samples, options.seed);
+  const std::vector<SurfacePoint> points = test_points(candidate, options.samples, options.seed);
   result.samples = points.size();
   std::vector<Motion> motions{{RigidTransform{}, 0}};
   std::vector<SampleOutcome> outcomes(points.size());

@@ -31,9 +31,11 @@
 #include "geometry/feature_lines.h"
 #include "geometry/mesh.h"
 #include "geometry/progress.h"
+#include "symmetry/candidates.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace dg {
@@ -65,14 +67,20 @@ struct RSimilarityResult {
   std::size_t dense_samples_exemplar = 0, dense_samples_candidate = 0;
 };
 
-/// A welded mesh with its feature lines (extract_feature_lines at spacing eps = r/4).
+/// One side of the comparison: a welded mesh with its feature lines (extract_feature_lines at
+/// spacing eps = r/4), or a point cloud with unit normals with its corners (cloud_keypoints of
+/// its voxel surface at eps).
 struct SimilarityInput {
-  const TriangleMesh& mesh;
-  const FeatureLines& feature_lines;
+  const TriangleMesh* mesh = nullptr;
+  const FeatureLines* feature_lines = nullptr;  ///< with mesh
+  const PointCloud* cloud = nullptr;
+  std::span<const Keypoint> cloud_keypoints;   ///< with cloud
+  std::span<const Keypoint> cloud_creases;     ///< with cloud: cloud_crease_samples
 };
 
-/// Estimates how r-similar `candidate` is to `exemplar` for radius r (model units). Throws
-/// InputError when either mesh has no triangles or r is not positive.
+/// Estimates how r-similar `candidate` is to `exemplar` for radius r (model units): two meshes or
+/// two point clouds. Throws InputError when a side has no triangles (no points), a cloud has no
+/// normals, or r is not positive.
 RSimilarityResult estimate_r_similarity(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r,
                                         const RSimilarityOptions& options = {}, const ProgressCallback& progress = {});
 

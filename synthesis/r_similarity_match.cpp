@@ -10,19 +10,27 @@ bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exe
                           std::span<const std::uint32_t> ball, const RigidTransform& t, const MatchTolerances& tolerances,
                           std::vector<std::uint32_t>& scratch) {
   if (ball.empty()) return false;
+  auto allowed = [&](std::size_t samples) {
+    return static_cast<std::size_t>(std::floor(tolerances.max_missing_fraction * static_cast<double>(samples)));
+  };
+  std::size_t missing = 0, may_miss = allowed(ball.size());
   for (std::uint32_t i : ball) {
     const SurfacePoint& p = candidate.samples()[i];
-    if (!exemplar.touches(t.apply(p.position), t.apply_direction(p.normal), tolerances.tolerance, tolerances.min_cos))
+    if (!exemplar.touches(t.apply(p.position), t.apply_direction(p.normal), tolerances.tolerance, tolerances.min_cos) &&
+        ++missing > may_miss)
       return false;
   }
   const RigidTransform back = t.inverse();
   if (!exemplar.gather_connected(t.apply(y.position), t.apply_direction(y.normal), tolerances.r, tolerances.tolerance,
                                  tolerances.min_cos, scratch))
     return false;
+  missing = 0;
+  may_miss = allowed(scratch.size());
   for (std::uint32_t i : scratch) {
     const SurfacePoint& q = exemplar.samples()[i];
     if (!candidate.touches(back.apply(q.position), back.apply_direction(q.normal), tolerances.tolerance,
-                           tolerances.min_cos))
+                           tolerances.min_cos) &&
+        ++missing > may_miss)
       return false;
   }
   return true;

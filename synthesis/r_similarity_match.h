@@ -19,13 +19,17 @@ struct MatchTolerances {
   /// ICP pairs a sample with surface at most this far away, model units (<= max_cutoff of the indexes).
   double icp_cutoff = 0.0;
   int icp_iterations = 10;
+  /// Fraction of a ball's samples (each way) allowed to miss the other surface: 0 for meshes;
+  /// point clouds leave random gaps at edges and corners that no disk radius closes for sure.
+  double max_missing_fraction = 0.0;
 };
 
 /// True when the neighbourhoods match under t: every candidate sample of `ball` (y's intrinsic
 /// r-neighbourhood, SurfaceIndex::gather_connected) mapped by t touches the exemplar, and every
 /// sample of the exemplar's intrinsic r-neighbourhood of t(y) mapped back by t^-1 touches the
-/// candidate (distance and normal tolerances); false when no exemplar triangle lies within the
-/// tolerance of t(y). `scratch` is reused storage.
+/// candidate (distance and normal tolerances; up to max_missing_fraction of each side may
+/// miss); false when no exemplar element lies within the tolerance of t(y). `scratch` is
+/// reused storage.
 bool neighbourhoods_match(const SurfaceIndex& candidate, const SurfaceIndex& exemplar, const SurfacePoint& y,
                           std::span<const std::uint32_t> ball, const RigidTransform& t, const MatchTolerances& tolerances,
                           std::vector<std::uint32_t>& scratch);

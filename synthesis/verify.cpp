@@ -1,6 +1,7 @@
 #include "synthesis/verify.h"
 
 #include "geometry/cleaning.h"
+#include "geometry/cloud_cell_geometry.h"
 #include "geometry/errors.h"
 #include "geometry/feature_edges.h"
 #include "geometry/feature_lines.h"
@@ -8,12 +9,14 @@
 #include "geometry/self_intersections.h"
 #include "geometry/stopwatch.h"
 #include "geometry/voxel_surface.h"
+#include "symmetry/cloud_keypoints.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace dg {
 namespace {
@@ -25,9 +28,12 @@ struct CleanModel {
   FeatureLines feature_lines;
 };
 
+std::string name_of(const Model& model, const char* role) {
+  return model.source_path.empty() ? std::string(role) : model.source_path;
+}
+
 CleanModel clean_model(Model model, const char* role) {
-  const std::string name = model.source_path.empty() ? std::string(role) : model.source_path;
-  if (model.is_point_cloud()) throw InputError(name + ": the " + role + " is a point cloud; verify needs triangle meshes");
+  const std::string name = name_of(model, role);
   CleanModel clean{std::move(model.mesh), {}, {}};
   clean.cleaning = clean_mesh(clean.mesh);
   if (clean.mesh.triangles.empty()) throw InputError(name + ": no triangles left after dropping degenerate ones");
@@ -50,6 +56,102 @@ ModelChecks topology_checks(const CleanModel& model) {
   return checks;
 }
 
+// A cleaned point cloud with unit normals (estimated when the file had none) and its corners.
+struct CleanCloud {
+  PointCloud cloud;
+  std::vector<Keypoint> keypoints, creases;
+  bool normals_estimated = false;
+};
+
+CleanCloud clean_cloud(Model model, const char* role) {
+  const std::string name = name_of(model, role);
+  CleanCloud clean{std::move(model.cloud), {}, {}, false};
+  clean_point_cloud(clean.cloud);
+  if (clean.cloud.positions.empty()) throw InputError(name + ": the " + role + " has no points");
+  return clean;
+}
+
+// The corners and crease samples of the cloud's voxel surface at eps = r / 4, and normals from
+// its fitted cell planes where the file had none.
+void add_normals_and_corners(CleanCloud& clean, double r) {
+  VoxelSurfaceOptions voxel;
+  voxel.r = r;
+  voxel.eps = r / 4.0;
+  const VoxelSurface surface = build_voxel_surface(clean.cloud, voxel);
+  if (!clean.cloud.has_normals()) {
+    clean.cloud.normals = cell_plane_normals(clean.cloud, surface);
+    clean.normals_estimated = true;
+  }
+  clean.keypoints = cloud_keypoints(clean.cloud, surface);
+  clean.creases = cloud_crease_samples(clean.cloud, surface);
+}
+
+ModelChecks cloud_checks(const CleanCloud& clean) {
+  ModelChecks checks;
+  checks.point_cloud = true;
+  checks.points = clean.cloud.positions.size();
+  checks.normals_estimated = clean.normals_estimated;
+  return checks;
+}
+
+BoundingBox bounds_of(const CleanModel& model) { return model.mesh.bounds(); }
+BoundingBox bounds_of(const CleanCloud& cloud) { return cloud.cloud.bounds(); }
+
+SimilarityInput similarity_input(const CleanModel& model) {
+  SimilarityInput input;
+  input.mesh = &model.mesh;
+  input.feature_lines = &model.feature_lines;
+  return input;
+}
+
+SimilarityInput similarity_input(const CleanCloud& cloud) {
+  SimilarityInput input;
+  input.cloud = &cloud.cloud;
+  input.cloud_keypoints = cloud.keypoints;
+  input.cloud_creases = cloud.creases;
+  return input;
+}
+
+// The start both kinds share: the report's paths, both sides cleaned by `clean` (stage "clean"),
+// r (the option, else the default for the cleaned exemplar's bounds), then both sides given
+// to `prepare` with r (stage `stage`).
+template <class Clean, class Prepare>
+auto prepare_sides(Model exemplar, Model candidate, const VerifyOptions& options, const ProgressCallback& progress,
+                   VerifyReport& report, Clean clean, const char* stage, Prepare prepare) {
+  report.exemplar_path = exemplar.source_path;
+  report.candidate_path = candidate.source_path;
+  Stopwatch clock;
+  report_progress(progress, "clean", 0.0);
+  auto exemplar_clean = clean(std::move(exemplar), "exemplar");
+  auto candidate_clean = clean(std::move(candidate), "candidate");
+  const double r = options.r > 0.0 ? options.r : default_radius(bounds_of(exemplar_clean));
+  if (!(r > 0.0)) throw InputError(report.exemplar_path + ": the exemplar has zero extent; pass -r");
+  report.timings.push_back({"clean", clock.lap()});
+  report_progress(progress, stage, 0.0);
+  prepare(exemplar_clean, r);
+  prepare(candidate_clean, r);
+  report.timings.push_back({stage, clock.lap()});
+  return std::make_tuple(std::move(exemplar_clean), std::move(candidate_clean), r);
+}
+
+// Two point clouds: only r-similarity applies (a cloud has no edges to be closed or faces to
+// intersect).
+VerifyReport verify_clouds(Model exemplar, Model candidate, const VerifyOptions& options, const ProgressCallback& progress) {
+  VerifyReport report;
+  auto [exemplar_clean, candidate_clean, r] = prepare_sides(std::move(exemplar), std::move(candidate), options, progress,
+                                                             report, clean_cloud, "normals and corners", add_normals_and_corners);
+  Stopwatch clock;
+  report.exemplar = cloud_checks(exemplar_clean);
+  report.candidate = cloud_checks(candidate_clean);
+  report.similarity = estimate_r_similarity(similarity_input(exemplar_clean), similarity_input(candidate_clean), r,
+                                            options.similarity, progress);
+  report.timings.push_back({"r-similarity", clock.lap()});
+  report.checks.push_back({"r_similarity", report.similarity.fraction >= options.min_similar_fraction,
+                           fmt::format("r-similar fraction >= {}", options.min_similar_fraction)});
+  report.pass = report.checks.back().pass;
+  return report;
+}
+
 }  // namespace
 
 VerifyReport verify_models(const std::filesystem::path& exemplar, const std::filesystem::path& candidate,
@@ -68,20 +170,17 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
                            const ProgressCallback& progress) {
   if (!std::isfinite(options.r) || options.r < 0.0)
     throw InputError("-r must be a positive number of model units (0 or absent = default)");
+  if (exemplar.is_point_cloud() != candidate.is_point_cloud()) {
+    const bool cloud_first = exemplar.is_point_cloud();
+    throw InputError(fmt::format("{} is a point cloud and {} a mesh: verify compares two meshes or two point clouds",
+                                 name_of(cloud_first ? exemplar : candidate, cloud_first ? "the exemplar" : "the candidate"),
+                                 name_of(cloud_first ? candidate : exemplar, cloud_first ? "the candidate" : "the exemplar")));
+  }
+  if (exemplar.is_point_cloud()) return verify_clouds(std::move(exemplar), std::move(candidate), options, progress);
   VerifyReport report;
-  report.exemplar_path = exemplar.source_path;
-  report.candidate_path = candidate.source_path;
+  auto [exemplar_clean, candidate_clean, r] = prepare_sides(std::move(exemplar), std::move(candidate), options, progress,
+                                                             report, clean_model, "feature lines", add_feature_lines);
   Stopwatch clock;
-  report_progress(progress, "clean", 0.0);
-  CleanModel exemplar_clean = clean_model(std::move(exemplar), "exemplar");
-  CleanModel candidate_clean = clean_model(std::move(candidate), "candidate");
-  const double r = options.r > 0.0 ? options.r : default_radius(exemplar_clean.mesh.bounds());
-  if (!(r > 0.0)) throw InputError(report.exemplar_path + ": the exemplar has zero extent; pass -r");
-  report.timings.push_back({"clean", clock.lap()});
-  report_progress(progress, "feature lines", 0.0);
-  add_feature_lines(exemplar_clean, r);
-  add_feature_lines(candidate_clean, r);
-  report.timings.push_back({"feature lines", clock.lap()});
 
   report.exemplar = topology_checks(exemplar_clean);
   report.candidate = topology_checks(candidate_clean);
@@ -96,8 +195,7 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
   report.candidate.self_intersections_capped = candidate_intersections.capped;
   report.timings.push_back({"self-intersections", clock.lap()});
 
-  report.similarity = estimate_r_similarity({exemplar_clean.mesh, exemplar_clean.feature_lines},
-                                            {candidate_clean.mesh, candidate_clean.feature_lines}, r,
+  report.similarity = estimate_r_similarity(similarity_input(exemplar_clean), similarity_input(candidate_clean), r,
                                             options.similarity, progress);
   report.timings.push_back({"r-similarity", clock.lap()});
 
@@ -114,32 +212,41 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
   return report;
 }
 
+namespace {
+
+// Topology fields of one side (point clouds: their point count).
+nlohmann::json checks_json(const ModelChecks& c) {
+  if (c.point_cloud) return {{"point_cloud", true}, {"points", c.points}, {"normals_estimated", c.normals_estimated}};
+  return {{"closed", c.closed},
+          {"oriented", c.oriented},
+          {"boundary_edges", c.boundary_edges},
+          {"non_manifold_edges", c.non_manifold_edges},
+          {"inconsistent_edges", c.inconsistent_edges},
+          {"triangles", c.triangles}};
+}
+
+}  // namespace
+
 nlohmann::json to_json(const VerifyReport& report) {
   const ModelChecks& c = report.candidate;
   const RSimilarityResult& s = report.similarity;
-  nlohmann::json out = {{"exemplar_path", report.exemplar_path},
-                        {"candidate_path", report.candidate_path},
-                        {"closed", c.closed},
-                        {"oriented", c.oriented},
-                        {"boundary_edges", c.boundary_edges},
-                        {"non_manifold_edges", c.non_manifold_edges},
-                        {"inconsistent_edges", c.inconsistent_edges},
-                        {"triangles", c.triangles},
-                        {"self_intersections", c.self_intersections},
-                        {"self_intersections_capped", c.self_intersections_capped},
-                        {"r", s.r},
-                        {"tolerance", s.tolerance},
-                        {"samples", s.samples},
-                        {"r_similar_samples", s.similar},
-                        {"r_similar_fraction", s.fraction},
-                        {"pass", report.pass}};
+  nlohmann::json out = {{"exemplar_path", report.exemplar_path}, {"candidate_path", report.candidate_path}};
+  out.update(checks_json(c));
+  if (!c.point_cloud) {
+    out["self_intersections"] = c.self_intersections;
+    out["self_intersections_capped"] = c.self_intersections_capped;
+  }
+  out.update(nlohmann::json{{"r", s.r},
+                            {"tolerance", s.tolerance},
+                            {"samples", s.samples},
+                            {"r_similar_samples", s.similar},
+                            {"r_similar_fraction", s.fraction},
+                            {"pass", report.pass}});
   const ModelChecks& e = report.exemplar;
-  out["exemplar"] = {{"closed", e.closed},
-                     {"oriented", e.oriented},
-                     {"boundary_edges", e.boundary_edges},
-                     {"non_manifold_edges", e.non_manifold_edges},
-                     {"triangles", e.triangles},
-                     {"self_intersects", e.self_intersects}};
+  out["exemplar"] = checks_json(e);
+  if (!e.point_cloud) {
+    out["exemplar"]["self_intersects"] = e.self_intersects;
+  }
   out["similarity"] = {{"motions", s.motions},
                        {"searched_samples", s.searched},
                        {"dense_samples_exemplar", s.dense_samples_exemplar},
@@ -176,6 +283,10 @@ std::string to_text(const VerifyReport& report) {
     text += fmt::format("  {} {:<19} {}; requires {}\n", check.pass ? "PASS" : "FAIL", check.name, detail,
                         check.requirement);
   }
+  if (c.point_cloud)
+    text += fmt::format("  point clouds ({} and {} points{}): closedness and self-intersections do not apply\n",
+                        report.exemplar.points, c.points,
+                        report.exemplar.normals_estimated || c.normals_estimated ? ", normals fitted to the points" : "");
   text += fmt::format("{}\n", report.pass ? "PASS" : "FAIL");
   return text;
 }

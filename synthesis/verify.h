@@ -1,6 +1,7 @@
 #pragma once
 // `verify`: an independent check of a generated model against its exemplar, without any
-// grammar: closedness and manifoldness, self-intersections, and r-similarity.
+// grammar: closedness and manifoldness, self-intersections, and r-similarity (point clouds:
+// r-similarity only).
 
 #include "geometry/prepared_model.h"
 #include "geometry/progress.h"
@@ -25,8 +26,12 @@ struct VerifyOptions {
   std::size_t max_intersecting_pairs = 1000;  ///< self-intersection enumeration stops here
 };
 
-/// Topology and self-intersections of one (welded, cleaned) model.
+/// Topology and self-intersections of one (welded, cleaned) model; a point cloud has only its
+/// point count.
 struct ModelChecks {
+  bool point_cloud = false;
+  std::size_t points = 0;          ///< point clouds: points after cleaning
+  bool normals_estimated = false;  ///< point clouds: the file had no normals, they were fitted
   bool closed = false;    ///< no boundary and no non-manifold edges
   bool oriented = false;  ///< no two triangles traverse a shared edge the same way
   std::size_t boundary_edges = 0;
@@ -54,9 +59,11 @@ struct VerifyReport {
   std::vector<StageTiming> timings;  ///< seconds per stage
 };
 
-/// Loads and welds both models (InputError when unreadable, invalid or a point cloud), then checks the
-/// candidate: closed and oriented if the exemplar is; free of self-intersections if the
-/// exemplar is; r-similar fraction at least min_similar_fraction.
+/// Loads and welds both models (InputError when unreadable or invalid, or when one is a point
+/// cloud and the other a mesh), then checks the candidate: closed and oriented if the exemplar
+/// is; free of self-intersections if the exemplar is; r-similar fraction at least
+/// min_similar_fraction. Two point clouds get the r-similarity check only (normals fitted to
+/// the points when a file has none).
 VerifyReport verify_models(const std::filesystem::path& exemplar, const std::filesystem::path& candidate,
                            const VerifyOptions& options = {}, const ProgressCallback& progress = {});
 
@@ -64,9 +71,10 @@ VerifyReport verify_models(const std::filesystem::path& exemplar, const std::fil
 VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions& options = {},
                            const ProgressCallback& progress = {});
 
-/// The report as JSON: closed, oriented, boundary_edges, non_manifold_edges, self_intersections,
-/// r, samples, r_similar_fraction, pass, checks {name: {pass, requirement}}, exemplar {...},
-/// similarity details and timings_s.
+/// The report as JSON: closed, oriented, boundary_edges, non_manifold_edges, self_intersections
+/// (point clouds instead: point_cloud, points, normals_estimated), r, samples,
+/// r_similar_fraction, pass, checks {name: {pass, requirement}}, exemplar {...}, similarity
+/// details and timings_s.
 nlohmann::json to_json(const VerifyReport& report);
 
 /// A short readable list with PASS/FAIL per check.

@@ -2,6 +2,7 @@
 // and its resized points lie on (and cover) the generator's larger facade.
 
 #include "synthesis/grid_resize.h"
+#include "synthesis/verify.h"
 
 #include "assets/generator/asset.h"
 #include "geometry/model_io.h"
@@ -92,6 +93,12 @@ TEST_CASE("a point cloud drawn on the facade gives its 2-grid and resized points
     CHECK(dg::test::one_sided_distance(points_only, truth) < 0.1 * eps);
     const std::vector<Vec3> samples = dg::sample_surface(truth, 20000, 2).positions;
     CHECK(covered_fraction(samples, resized.positions, eps) > 0.999);
+    // And r-similar to the scan, checked on the points alone (normals fitted to both).
+    dg::Model candidate;
+    candidate.cloud = resized;
+    const dg::VerifyReport report = dg::verify_models(prepared.model, std::move(candidate));
+    CHECK(report.pass);
+    CHECK(report.candidate.normals_estimated);
   }
   // The exemplar-sized result is not a cover of the larger facade (the check can fail).
   const dg::PointCloud small = dg::resize_grid_points(grid, pieces, facade_counts(grid, 3, 4));
@@ -159,6 +166,22 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   CHECK(bigger.is_point_cloud());
   CHECK(bigger.cloud.positions.size() > grammar.exemplar_points.positions.size());
   CHECK(std::filesystem::exists(folder / "bigger.png"));
+  // The resized cloud and a generated variant are r-similar to the scan they came from.
+  auto verified = [&](const std::filesystem::path& candidate) {
+    const dg::test::CliRun run = dg::test::run_cli("verify " + cloud.string() + " " + candidate.string() + " -q --json", folder);
+    CHECK(run.status == 0);
+    return nlohmann::json::parse(run.output.substr(run.output.find('{')));
+  };
+  const nlohmann::json bigger_checked = verified(folder / "bigger.ply");
+  CHECK(bigger_checked["point_cloud"] == true);
+  CHECK(bigger_checked["points"].get<std::size_t>() == bigger.cloud.positions.size());
+  CHECK(bigger_checked["r_similar_fraction"].get<double>() >= 0.995);
+  CHECK_FALSE(bigger_checked.contains("closed"));
+  dg::write_mesh(folder / "facade.obj", facade(2, 3));
+  const dg::test::CliRun mixed =
+      dg::test::run_cli("verify " + cloud.string() + " " + (folder / "facade.obj").string() + " -q", folder);
+  CHECK(mixed.status == 2);
+  CHECK(mixed.output.find("two meshes or two point clouds") != std::string::npos);
   const dg::test::CliRun as_obj =
       dg::test::run_cli("resize " + grammar_path.string() + " -q --grid " + grid + " -o " + (folder / "bigger.obj").string(), folder);
   CHECK(as_obj.status == 2);
@@ -172,6 +195,7 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   std::ifstream manifest_file(folder / "variants" / "manifest.json");
   const nlohmann::json manifest = nlohmann::json::parse(manifest_file);
   CHECK(manifest["variants"][1]["points"].get<std::size_t>() > 0);
+  CHECK(verified(folder / "variants" / "variant_00001.ply")["pass"] == true);
   const dg::test::CliRun obj_variants = dg::test::run_cli(
       "generate " + grammar_path.string() + " -q --count 1 --format obj -o " + (folder / "obj").string(), folder);
   CHECK(obj_variants.status == 2);

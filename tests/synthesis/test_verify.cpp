@@ -6,6 +6,7 @@
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
 #include "geometry/self_intersections.h"
+#include "geometry/surface_sampling.h"
 #include "support/shapes.h"
 #include "synthesis/r_similarity_index.h"
 
@@ -46,6 +47,13 @@ dg::Model facade_with_scaled_window(double factor) {
     }
   REQUIRE(moved >= 8);
   return model;
+}
+
+// A scan-like cloud of `points` points drawn on the model's surface (with the triangles' normals).
+dg::Model scan_of(const dg::Model& model, std::size_t points, std::uint64_t seed) {
+  dg::Model cloud;
+  cloud.cloud = dg::sample_surface(model.mesh, points, seed);
+  return cloud;
 }
 
 struct Run {
@@ -218,4 +226,71 @@ TEST_CASE("verify CLI: exit 0 when valid, 1 when a check fails, 2 for bad input"
   CHECK(run_cli("verify " + (folder / "garbage.obj").string() + " " + exemplar, folder).status == 2);
   CHECK(run_cli("verify " + exemplar, folder).status == 2);
   fs::remove_all(folder);
+}
+
+// Point clouds: about 4 points per voxel face (eps = 0.066) on the 3 x 4 facade.
+TEST_CASE("verify: two independent scans of the facade are r-similar point clouds", "[synthesis][verify][cloud]") {
+  const dg::VerifyReport report = dg::verify_models(scan_of(facade_model(3, 4), 200000, 1), scan_of(facade_model(3, 4), 200000, 2));
+  CHECK(report.pass);
+  CHECK(report.similarity.fraction >= 0.995);
+  CHECK(report.candidate.point_cloud);
+  CHECK(report.candidate.points == 200000);
+  CHECK_FALSE(report.candidate.normals_estimated);
+  REQUIRE(report.checks.size() == 1);
+  CHECK(report.checks[0].name == "r_similarity");
+}
+
+TEST_CASE("verify: a scan of a larger facade is r-similar to the scan of the smaller", "[synthesis][verify][cloud]") {
+  const dg::VerifyReport report = dg::verify_models(scan_of(facade_model(3, 4), 200000, 1), scan_of(facade_model(5, 7), 430000, 2));
+  CHECK(report.pass);
+  CHECK(report.similarity.fraction >= 0.995);
+}
+
+TEST_CASE("verify: a moved and turned scan without normals is r-similar", "[synthesis][verify][cloud]") {
+  dg::Model moved = scan_of(facade_model(3, 4), 200000, 2);
+  const Eigen::AngleAxisd turn(1.1, Vec3(1, 2, 3).normalized());
+  for (Vec3& p : moved.cloud.positions) p = turn * p + Vec3(3, 1, -2);
+  moved.cloud.normals.clear();
+  const dg::VerifyReport report = dg::verify_models(scan_of(facade_model(3, 4), 200000, 1), std::move(moved));
+  CHECK(report.candidate.normals_estimated);
+  CHECK_FALSE(report.exemplar.normals_estimated);
+  CHECK(report.pass);
+  CHECK(report.similarity.fraction >= 0.995);
+}
+
+TEST_CASE("verify: a scan with one window scaled by 1.3 loses the samples around it", "[synthesis][verify][cloud]") {
+  const dg::VerifyReport report =
+      dg::verify_models(scan_of(facade_model(3, 4), 200000, 1), scan_of(facade_with_scaled_window(1.3), 200000, 2));
+  CHECK_FALSE(report.pass);
+  CHECK(report.similarity.fraction < 0.995);
+  REQUIRE_FALSE(report.similarity.dissimilar_points.empty());
+  // Every dissimilar point lies within r of the scaled window (x in [4.72, 6.28], z in [7.675, 9.625]).
+  const double r = report.similarity.r;
+  for (const Vec3& p : report.similarity.dissimilar_points) {
+    CHECK(p.x() > 4.72 - r);
+    CHECK(p.x() < 6.28 + r);
+    CHECK(p.z() > 7.675 - r);
+    CHECK(p.z() < 9.625 + r);
+  }
+}
+
+TEST_CASE("verify: a point cloud against a mesh is a clear input error", "[synthesis][verify][cloud]") {
+  CHECK_THROWS_AS(dg::verify_models(facade_model(3, 4), scan_of(facade_model(3, 4), 1000, 1)), dg::InputError);
+  CHECK_THROWS_WITH(dg::verify_models(scan_of(facade_model(3, 4), 1000, 1), facade_model(3, 4)),
+                    Catch::Contains("is a point cloud and") && Catch::Contains("two meshes or two point clouds"));
+}
+
+TEST_CASE("verify: scans with noise of 0.075 eps match within a tolerance widened to the noise", "[synthesis][verify][cloud]") {
+  dg::Model a = scan_of(facade_model(3, 4), 200000, 1), b = scan_of(facade_model(3, 4), 200000, 2);
+  const double eps = 0.2656 / 4.0;
+  dg::add_noise(a.cloud, 0.075 * eps, 3);
+  dg::add_noise(b.cloud, 0.075 * eps, 4);
+  const dg::VerifyReport report = dg::verify_models(a, b);
+  CHECK(report.similarity.tolerance > 0.25 * eps * 1.1);
+  CHECK(report.similarity.tolerance < 0.5 * eps);
+  CHECK(report.pass);
+  // Still not so wide that a window scaled by 1.3 passes.
+  dg::Model scaled = scan_of(facade_with_scaled_window(1.3), 200000, 2);
+  dg::add_noise(scaled.cloud, 0.075 * eps, 4);
+  CHECK_FALSE(dg::verify_models(a, scaled).pass);
 }

@@ -28,7 +28,8 @@ void add_verify_command(CLI::App& app) {
       "Check a generated model against its exemplar: closed, no self-intersections, r-similar (a point's "
       "r-neighbourhood is the surface inside the r-ball that is connected to the point within the ball, an "
       "intrinsic neighbourhood as in Bokeloh et al. 2010 sec. 3.1; it must match the exemplar's under a rigid "
-      "motion, both ways)");
+      "motion, both ways). Two point clouds (PLY without faces, XYZ) get the r-similarity check, each point "
+      "standing for a small disk in its tangent plane (normals fitted when the file has none)");
   command->add_option("EXEMPLAR", options->exemplar, "The exemplar model file")->required();
   command->add_option("CANDIDATE", options->candidate, "The model to check")->required();
   command->add_option("-r,--radius", options->verify.r,
