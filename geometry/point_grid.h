@@ -22,6 +22,16 @@ class PointGrid {
   /// in a fixed order (ascending index within a bucket).
   template <class Visit>
   void visit_within(const Vec3& p, double radius, Visit&& visit) const {
+    any_within(p, radius, [&](std::uint32_t point, double d2) {
+      visit(point, d2);
+      return false;
+    });
+  }
+
+  /// The same in the same order, stopping at the first point for which visit returns true;
+  /// returns whether one did.
+  template <class Visit>
+  bool any_within(const Vec3& p, double radius, Visit&& visit) const {
     const double radius2 = radius * radius;
     const CellKey lo = cell_key(p - Vec3::Constant(radius), cell_), hi = cell_key(p + Vec3::Constant(radius), cell_);
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
@@ -32,9 +42,10 @@ class PointGrid {
           for (std::uint32_t i = found->second.first; i < found->second.second; ++i) {
             const std::uint32_t point = order_[i];
             const double d2 = (points_[point] - p).squaredNorm();
-            if (d2 <= radius2) visit(point, d2);
+            if (d2 <= radius2 && visit(point, d2)) return true;
           }
         }
+    return false;
   }
 
   double cell() const { return cell_; }

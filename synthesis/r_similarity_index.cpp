@@ -62,7 +62,7 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 
 SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gather_radius, double max_cutoff,
                            std::uint64_t seed)
-    : mesh_(&mesh), cell_(gather_radius), element_cell_(2.0 * max_cutoff) {
+    : mesh_(&mesh), cell_(gather_radius), triangle_cell_(2.0 * max_cutoff) {
   element_normals_.reserve(mesh.triangles.size());
   std::vector<SurfacePoint> points;
   std::vector<std::uint32_t> triangles_of_points;
@@ -83,13 +83,13 @@ SurfaceIndex::SurfaceIndex(const TriangleMesh& mesh, double spacing, double gath
     }
   }
   set_samples(std::move(points), std::move(triangles_of_points));
-  build_element_grid(max_cutoff);
+  build_triangle_grid(max_cutoff);
   build_vertex_triangles();
 }
 
 SurfaceIndex::SurfaceIndex(const PointCloud& cloud, double splat_radius, double spacing, double gather_radius,
                            double max_cutoff)
-    : cloud_(&cloud), splat_radius_(splat_radius), cell_(gather_radius), element_cell_(2.0 * max_cutoff) {
+    : cloud_(&cloud), splat_radius_(splat_radius), cell_(gather_radius), point_reach_(max_cutoff + splat_radius) {
   if (!cloud.has_normals()) throw InputError("r-similarity of a point cloud needs a normal per point");
   element_normals_ = cloud.normals;
   std::vector<SurfacePoint> points;
@@ -101,8 +101,8 @@ SurfaceIndex::SurfaceIndex(const PointCloud& cloud, double splat_radius, double 
       kept.push_back(i);
     }
   set_samples(std::move(points), std::move(kept));
-  build_element_grid(max_cutoff);
-  link_grid_ = std::make_unique<PointGrid>(cloud.positions, 2.0 * splat_radius);
+  // A disk within max_cutoff of a query has its centre within point_reach_ (>= the link distance).
+  point_grid_ = std::make_unique<PointGrid>(cloud.positions, point_reach_);
 }
 
 SurfaceIndex::~SurfaceIndex() = default;
@@ -147,30 +147,22 @@ void SurfaceIndex::build_vertex_triangles() {
     for (std::uint32_t v : mesh_->triangles[t]) vertex_triangles_[filled[v]++] = t;
 }
 
-// Lists each element in every cell whose centre lies within max_cutoff + half the cell diagonal
+// Lists each triangle in every cell whose centre lies within max_cutoff + half the cell diagonal
 // of it, so a query needs only the cell holding q. Cells are 2 x max_cutoff wide; candidates are
-// visited column by column along the element's dominant normal axis, only near its plane.
-void SurfaceIndex::build_element_grid(double max_cutoff) {
-  const double g = element_cell_;
+// visited column by column along the triangle's dominant normal axis, only near its plane.
+void SurfaceIndex::build_triangle_grid(double max_cutoff) {
+  const double g = triangle_cell_;
   const double reach = max_cutoff + 0.5 * std::sqrt(3.0) * g;
   constexpr std::size_t kChunk = 4096;
-  const std::size_t elements = element_normals_.size(), chunks = (elements + kChunk - 1) / kChunk;
+  const std::size_t triangles = mesh_->triangles.size(), chunks = (triangles + kChunk - 1) / kChunk;
   std::vector<std::vector<std::pair<Key, std::uint32_t>>> per_chunk(chunks);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     auto& items = per_chunk[chunk];
-    const auto end = static_cast<std::uint32_t>(std::min(elements, (chunk + 1) * kChunk));
+    const auto end = static_cast<std::uint32_t>(std::min(triangles, (chunk + 1) * kChunk));
     for (auto t = static_cast<std::uint32_t>(chunk * kChunk); t < end; ++t) {
+      const auto [a, b, c] = mesh_->corners(t);
       const Vec3 n = element_normals_[t];
-      // a: a point of the element's plane
-      const Vec3 a = mesh_ ? mesh_->corners(t)[0] : cloud_->positions[t];
-      Vec3 lo = a, hi = a;
-      if (mesh_)
-        for (const Vec3& corner : mesh_->corners(t)) {
-          lo = lo.cwiseMin(corner);
-          hi = hi.cwiseMax(corner);
-        }
-      lo.array() -= reach + splat_radius_;
-      hi.array() += reach + splat_radius_;
+      const Vec3 lo = a.cwiseMin(b).cwiseMin(c).array() - reach, hi = a.cwiseMax(b).cwiseMax(c).array() + reach;
       int w = 0;
       n.cwiseAbs().maxCoeff(&w);
       const int u = (w + 1) % 3, v = (w + 2) % 3;
@@ -185,13 +177,13 @@ void SurfaceIndex::build_element_grid(double max_cutoff) {
             w_lo = std::min(w_lo, plane_w);
             w_hi = std::max(w_hi, plane_w);
           }
-          const double slack = (reach + splat_radius_) / std::abs(n[w]);
+          const double slack = reach / std::abs(n[w]);
           for (std::int64_t k = index(std::max(lo[w], w_lo - slack)); k <= index(std::min(hi[w], w_hi + slack)); ++k) {
             Vec3 centre;
             centre[u] = (static_cast<double>(i) + 0.5) * g;
             centre[v] = (static_cast<double>(j) + 0.5) * g;
             centre[w] = (static_cast<double>(k) + 0.5) * g;
-            if ((closest_on_element(t, centre) - centre).squaredNorm() <= reach * reach)
+            if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() <= reach * reach)
               items.emplace_back(key(centre, g), t);
           }
         }
@@ -203,9 +195,9 @@ void SurfaceIndex::build_element_grid(double max_cutoff) {
     std::vector<std::pair<Key, std::uint32_t>>().swap(chunk);
   }
   tbb::parallel_sort(items.begin(), items.end());
-  cell_elements_.reserve(items.size());
-  for (const auto& item : items) cell_elements_.push_back(item.second);
-  fill_ranges(items.size(), [&](std::size_t i) { return items[i].first; }, element_buckets_);
+  cell_triangles_.reserve(items.size());
+  for (const auto& item : items) cell_triangles_.push_back(item.second);
+  fill_ranges(items.size(), [&](std::size_t i) { return items[i].first; }, triangle_buckets_);
 }
 
 SurfaceIndex::Key SurfaceIndex::key(const Vec3& p, double cell) {
@@ -287,7 +279,7 @@ void SurfaceIndex::connected_points(const Vec3& p, double radius, std::vector<st
   const double radius2 = radius * radius;
   std::unordered_set<std::uint32_t> reached(component.begin(), component.end());
   for (std::size_t i = 0; i < component.size(); ++i)
-    link_grid_->visit_within(cloud_->positions[component[i]], link_grid_->cell(), [&](std::uint32_t other, double) {
+    point_grid_->visit_within(cloud_->positions[component[i]], 2.0 * splat_radius_, [&](std::uint32_t other, double) {
       if ((cloud_->positions[other] - p).squaredNorm() <= radius2 && reached.insert(other).second) component.push_back(other);
     });
 }
@@ -300,12 +292,15 @@ bool SurfaceIndex::near_any_of(const Vec3& q, double cutoff, const std::vector<s
   });
 }
 
+// Visits the elements that may pass within max_cutoff of q (a mesh: the triangles listed in q's
+// cell; a cloud: the points within point_reach_), stopping when visit returns true.
 template <class Visit>
 bool SurfaceIndex::visit_elements(const Vec3& q, Visit&& visit) const {
-  const auto found = element_buckets_.find(key(q, element_cell_));
-  if (found == element_buckets_.end()) return false;
+  if (cloud_) return point_grid_->any_within(q, point_reach_, [&](std::uint32_t point, double) { return visit(point); });
+  const auto found = triangle_buckets_.find(key(q, triangle_cell_));
+  if (found == triangle_buckets_.end()) return false;
   for (std::uint32_t i = found->second.first; i < found->second.second; ++i)
-    if (visit(cell_elements_[i])) return true;
+    if (visit(cell_triangles_[i])) return true;
   return false;
 }
 

@@ -86,7 +86,7 @@ class SurfaceIndex {
   using Range = std::pair<std::uint32_t, std::uint32_t>;
   static Key key(const Vec3& p, double cell);
   void set_samples(std::vector<SurfacePoint> points, std::vector<std::uint32_t> elements);
-  void build_element_grid(double max_cutoff);
+  void build_triangle_grid(double max_cutoff);
   void build_vertex_triangles();
   Vec3 closest_on_element(std::uint32_t element, const Vec3& q) const;
   void connected_triangles(const Vec3& p, double radius, std::vector<std::uint32_t>& component) const;
@@ -98,16 +98,17 @@ class SurfaceIndex {
   const PointCloud* cloud_ = nullptr;
   double splat_radius_ = 0.0;          // cloud: disk radius of a point
   double cell_ = 1.0;                  // sample bucket size
-  double element_cell_ = 1.0;          // element grid cell size (= 2 max_cutoff)
+  double triangle_cell_ = 1.0;         // mesh: triangle grid cell size (= 2 max_cutoff)
+  double point_reach_ = 0.0;           // cloud: max_cutoff + splat radius
   std::vector<Vec3> element_normals_;  // mesh: triangle normals; cloud: point normals
   std::vector<SurfacePoint> samples_;
   std::vector<std::uint32_t> sample_elements_;   // element of each sample
   std::vector<std::uint32_t> vertex_offsets_;    // mesh: triangles around vertex v: vertex_triangles_[offsets[v] .. offsets[v+1])
   std::vector<std::uint32_t> vertex_triangles_;
-  std::unique_ptr<PointGrid> link_grid_;         // cloud: points by cells of the link distance
+  std::unique_ptr<PointGrid> point_grid_;        // cloud: points by cells of point_reach_
   std::unordered_map<Key, Range> buckets_;       // key -> sample range
-  std::vector<std::uint32_t> cell_elements_;
-  std::unordered_map<Key, Range> element_buckets_;  // key -> range of cell_elements_
+  std::vector<std::uint32_t> cell_triangles_;
+  std::unordered_map<Key, Range> triangle_buckets_;  // mesh: key -> range of cell_triangles_
 };
 
 /// splitmix64: a small, well-mixed 64-bit hash (per-triangle random streams, fixed shuffles).

@@ -1,12 +1,14 @@
 // dockgrammar-bench-synthesis: time of one random context-free variant (derivation, collision
 // checks, welding; no file output) on generated pipe trees and fences of growing size, of a
-// facade grid resize to 20 x 20, and of verify per 100k candidate triangles. Prints a Markdown
-// table for bench/results.md.
+// facade grid resize to 20 x 20, of verify per 100k candidate triangles, and of verify of two
+// point clouds (scans of the 3 x 4 and 5 x 7 facades). Prints a Markdown table for
+// bench/results.md.
 
 #include "assets/generator/asset.h"
 #include "geometry/stopwatch.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
+#include "geometry/surface_sampling.h"
 #include "grammar/grid_rules.h"
 #include "synthesis/grid_resize.h"
 #include "synthesis/shape_derivation.h"
@@ -95,6 +97,23 @@ void facade_resize_rows(std::size_t triangles, bool skip_verify) {
              report.pass ? "pass" : "FAIL", report.similarity.similar, report.similarity.samples);
 }
 
+// Verifies a scan of facade(5, 7) against a scan of facade(3, 4) of `points` points (the larger
+// one as dense: 2.2 times the points).
+void cloud_verify_row(std::size_t points) {
+  auto scan = [](int columns, int rows, std::size_t count, std::uint64_t seed) {
+    dg::Model model;
+    model.cloud = dg::sample_surface(dg::assets::make_asset("facade", {{"columns", columns}, {"rows", rows}}).mesh, count, seed);
+    return model;
+  };
+  dg::Model exemplar = scan(3, 4, points, 1), candidate = scan(5, 7, points * 22 / 10, 2);
+  dg::Stopwatch stopwatch;
+  const dg::VerifyReport report = dg::verify_models(std::move(exemplar), std::move(candidate));
+  fmt::print("verify of a {}-point scan of the facade 5x7 against a {}-point scan of the 3x4: {:.2f} s ({}, {} of {} samples "
+             "r-similar).\n",
+             points * 22 / 10, points, stopwatch.lap(), report.pass ? "pass" : "FAIL", report.similarity.similar,
+             report.similarity.samples);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,16 +122,19 @@ int main(int argc, char** argv) {
   int count = 10;
   int threads = 1;
   std::size_t facade_triangles = 100000;
+  std::size_t cloud_points = 200000;
   bool skip_variants = false, skip_verify = false;
   app.add_option("--sizes", sizes, "Target triangle counts of the exemplars")->delimiter(',');
   app.add_option("--count", count, "Variants per exemplar");
   app.add_option("--threads", threads, "Worker threads");
   app.add_option("--facade-triangles", facade_triangles, "Target triangle count of the facade 3x4 resized to 20 x 20");
   app.add_flag("--skip-variants", skip_variants, "No variant table (only the facade resize and its verify)");
-  app.add_flag("--skip-verify", skip_verify, "No verify of the resized facade");
+  app.add_flag("--skip-verify", skip_verify, "No verify of the resized facade and of the point clouds");
+  app.add_option("--cloud-points", cloud_points, "Points of the 3x4 facade's scan in the point-cloud verify");
   CLI11_PARSE(app, argc, argv);
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   if (!skip_variants) print_variants_table(sizes, count, threads);
   facade_resize_rows(facade_triangles, skip_verify);
+  if (!skip_verify) cloud_verify_row(cloud_points);
   return 0;
 }
