@@ -6,6 +6,7 @@
 // mesh are its triangles; those of a point cloud are its points, each a small disk in its
 // tangent plane (a splat) whose normal has no sign.
 
+#include "geometry/closest_point.h"
 #include "geometry/mesh.h"
 #include "geometry/point_grid.h"
 
@@ -113,8 +114,5 @@ class SurfaceIndex {
 
 /// splitmix64: a small, well-mixed 64-bit hash (per-triangle random streams, fixed shuffles).
 std::uint64_t splitmix64(std::uint64_t x);
-
-/// Closest point to p on triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace dg

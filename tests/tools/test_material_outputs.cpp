@@ -149,14 +149,20 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   dg::write_mesh_with_materials(folder / "stripes.obj", wall.mesh, wall.materials);
   const std::string model = (folder / "stripes.obj").string();
 
-  // Geometry alone finds no grid on a flat wall; the summary points to the material options.
+  // Geometry alone finds no grid on a flat wall; the summary names the tints that swap and the
+  // option that gives the grid (measured: material_hint).
   const dg::test::CliRun geometric = dg::test::run_cli("analyze " + model + " -q -o " + (folder / "plain").string(), folder);
   REQUIRE(geometric.status == 0);
-  CHECK(geometric.output.find("grids: none found; the model has materials") != std::string::npos);
-  CHECK(geometric.output.find("try --match-materials") != std::string::npos);
+  CHECK(geometric.output.find("grids: none found") != std::string::npos);
+  CHECK(geometric.output.find("--same-material 'glass_green,glass_blue' gives a 1-grid") != std::string::npos);
   std::ifstream plain_report(folder / "plain" / "stripes.report.md");
   const std::string plain_text((std::istreambuf_iterator<char>(plain_report)), std::istreambuf_iterator<char>());
-  CHECK(plain_text.find("try `--match-materials`, with `--same-material`") != std::string::npos);
+  CHECK(plain_text.find("`--same-material 'glass_green,glass_blue'` gives a 1-grid") != std::string::npos);
+  const dg::test::CliRun geometric_json =
+      dg::test::run_cli("analyze " + model + " -q --json -o " + (folder / "plain").string(), folder);
+  const nlohmann::json hint = nlohmann::json::parse(geometric_json.output)["material_hint"];
+  CHECK(hint["same_material"] == nlohmann::json::array({nlohmann::json::array({"glass_green", "glass_blue"})}));
+  CHECK(hint["grid_counts"].size() == 1);
 
   const dg::test::CliRun info = dg::test::run_cli("info " + model + " --json --same-material 'glass_*'", folder);
   REQUIRE(info.status == 0);
@@ -178,7 +184,7 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   std::ifstream report(folder / "out" / "stripes.report.md");
   const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(text.find("`glass_green`, `glass_blue` count as one") != std::string::npos);
-  CHECK(text.find("try `--match-materials`") == std::string::npos);
+  CHECK(text.find("Hint: the model's repeats are drawn in materials") == std::string::npos);
 
   const dg::test::CliRun unknown = dg::test::run_cli("info " + model + " --same-material 'glas,wall'", folder);
   CHECK(unknown.status == 2);

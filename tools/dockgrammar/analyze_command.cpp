@@ -13,6 +13,7 @@
 #include "grammar/grammar_file.h"
 #include "grammar/grid_rules.h"
 #include "grammar/grid_seams.h"
+#include "grammar/material_hint.h"
 #include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -65,6 +66,9 @@ void add_analyze_command(CLI::App& app) {
     }
     const std::optional<ToleranceHint> hint = tolerance_hint(prepared, symmetries, grammar.grids);
     grammar_timings.push_back({"grid rules", stopwatch.lap()});
+    const std::optional<MaterialHint> materials = material_hint(prepared, options->model.prepare, symmetry_options(options->tolerance_eps),
+                                                                grammar.grids.size(), progress);
+    grammar_timings.push_back({"material hint", stopwatch.lap()});
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries, {}, progress);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
     ContextFreeOptions cf_options;
@@ -79,7 +83,7 @@ void add_analyze_command(CLI::App& app) {
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
-                          folder / (stem + ".report.md"), {}, hint};
+                          folder / (stem + ".report.md"), {}, hint, materials};
     write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)

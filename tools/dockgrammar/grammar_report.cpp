@@ -285,12 +285,28 @@ std::string materials_paragraph(const PreparedModel& prepared) {
 
 // For a model with materials analysed by geometry alone: where to look when repeats exist only in
 // materials (empty otherwise). `quote` encloses option names (a backtick in Markdown).
-std::string materials_hint(const PreparedModel& prepared, std::string_view quote = "") {
-  if (prepared.materials_matched() || prepared.model.materials.size() < 2) return "";
+// The measured suggestion to match materials, when analyze made one; empty otherwise.
+std::string material_hint_text(const AnalysisReport& report, std::string_view quote = "") {
+  if (!report.material_hint) return "";
+  const MaterialHint& hint = *report.material_hint;
+  std::string grids;
+  for (const std::vector<int>& counts : hint.grid_counts) {
+    std::string counts_list;
+    for (int c : counts) counts_list += (counts_list.empty() ? "" : " x ") + std::to_string(c);
+    grids += fmt::format("{}a {}-grid {}", grids.empty() ? "" : ", ", counts.size(), counts_list);
+  }
+  if (hint.groups.empty())
+    return fmt::format("the model's repeats are drawn in materials: {0}--match-materials{0} gives {1}", quote, grids);
+  std::string flags, names;
+  for (const std::vector<std::string>& group : hint.groups) {
+    std::string list;
+    for (const std::string& name : group) list += (list.empty() ? "" : ",") + name;
+    flags += fmt::format("{}--same-material '{}'", flags.empty() ? "" : " ", list);
+    names += fmt::format("{}{}", names.empty() ? "" : "; ", list);
+  }
   return fmt::format(
-      "; the model has materials: for windows or panels drawn only in materials on flat walls, try "
-      "{0}--match-materials{0}, with {0}--same-material{0} for tints that vary at random",
-      quote);
+      "the model's repeats are drawn in materials, some of which take one another's place at random ({}): {}{}{} gives {}",
+      names, quote, flags, quote, grids);
 }
 
 // Tolerances of cell matching that the symmetries were found with.
@@ -321,7 +337,7 @@ std::string analysis_text(const AnalysisReport& report) {
     out += fmt::format("symmetries: none ({})\n", report.symmetries.note);
   else
     out += fmt::format("symmetries: {} in {} families\n", report.symmetries.symmetries.size(), report.symmetries.families.size());
-  if (report.grammar.grids.empty()) out += fmt::format("grids: none found{}\n", materials_hint(report.prepared));
+  if (report.grammar.grids.empty()) out += "grids: none found\n";
   for (const GridWithPieces& grid : report.grammar.grids) {
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
@@ -331,6 +347,7 @@ std::string analysis_text(const AnalysisReport& report) {
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
   if (const std::string hint = tolerance_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
+  if (const std::string hint = material_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
@@ -396,6 +413,9 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"materials", material_names(report.prepared.model.materials)},
           {"match_materials", report.prepared.materials_matched()},
           {"material_groups", material_groups(report.prepared)},
+          {"material_hint", report.material_hint ? nlohmann::json{{"same_material", report.material_hint->groups},
+                                                                  {"grid_counts", report.material_hint->grid_counts}}
+                                                 : nlohmann::json(nullptr)},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},
           {"docking_sites", docking_sites_json(report)},
@@ -434,11 +454,10 @@ void write_analysis_report(const AnalysisReport& report) {
   md += symmetry_table(report.symmetries, 20);
   md += "```\n\n## Grid rules\n\n";
   if (report.grammar.grids.empty())
-    md += fmt::format(
-        "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
-        "area){}.\n\n",
-        materials_hint(report.prepared, "`"));
+    md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
+          "area).\n\n";
   if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
+  if (const std::string hint = material_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   for (const GridWithPieces& grid : report.grammar.grids) {
     md += fmt::format(
         "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",

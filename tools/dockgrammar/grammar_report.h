@@ -5,6 +5,7 @@
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
+#include "grammar/material_hint.h"
 #include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -28,12 +29,14 @@ struct AnalysisReport {
   std::filesystem::path report_path;
   std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
   std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
+  std::optional<MaterialHint> material_hint;    ///< material matching that would give grids (grammar/material_hint.h)
 };
 
 /// Short readable summary for stdout.
 std::string analysis_text(const AnalysisReport& report);
 
-/// {r, eps, materials (names), match_materials, material_groups, symmetries, families,
+/// {r, eps, materials (names), match_materials, material_groups, material_hint (null, or
+/// {same_material: [[names]] (empty: --match-materials alone), grid_counts}), symmetries, families,
 /// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,
 /// transforms, count_range, pieces}], grammar_file, timings_s, missing}.
 nlohmann::json analysis_json(const AnalysisReport& report);
