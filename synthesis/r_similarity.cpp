@@ -97,6 +97,8 @@ struct SampleOutcome {
 constexpr double kSplatSpacings = 2.0;
 // Share of a cloud ball's samples that may miss the other surface (gaps at corners).
 constexpr double kCloudMissingFraction = 0.02;
+// A cloud's corners and creases are fitted to noisy points: twice the nearest anchors are tried.
+constexpr std::size_t kCloudAnchorFactor = 2;
 // Two noisy clouds: the tolerance covers this many standard deviations of the difference of
 // their noise (about 5 in 10000 samples beyond it).
 constexpr double kNoiseTolerance = 3.5;
@@ -130,7 +132,9 @@ class Matcher {
     tolerances_.min_cos = std::cos(options.normal_tolerance_degrees * std::numbers::pi / 180.0);
     tolerances_.icp_cutoff = eps;
     tolerances_.icp_iterations = options.icp_iterations;
+    anchors_ = options.anchors;
     if (exemplar.cloud) {
+      anchors_ *= kCloudAnchorFactor;
       tolerances_.max_missing_fraction = kCloudMissingFraction;
       tolerances_.min_cos = 0.0;  // any disk within the tolerance is surface: fitted normals blur at creases
     }
@@ -254,7 +258,7 @@ class Matcher {
       const Anchor& c = near[i];
       const auto [begin, end] = candidates_for(c);
       if (std::none_of(begin, end, [&](const Anchor& e) { return compatible(c, e); })) continue;
-      if (c.position != last && ++used > options_.anchors) break;
+      if (c.position != last && ++used > anchors_) break;
       last = c.position;
       for (auto e = begin; e != end; ++e)
         if (compatible(c, *e) && attempt(align(c, *e))) return true;
@@ -314,6 +318,7 @@ class Matcher {
   SurfaceIndex exemplar_index_, candidate_index_;
   std::vector<Anchor> candidate_keypoints_, candidate_samples_, exemplar_keypoints_, exemplar_samples_;
   MatchTolerances tolerances_;
+  std::size_t anchors_ = 0;  // nearest candidate anchors tried per test point
   double probe_cutoff_ = 0.0;
   std::optional<SurfacePoint> flat_disk_;
 };

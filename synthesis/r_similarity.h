@@ -27,6 +27,18 @@
 // batches; at the end failed points retry every motion found. So the result is deterministic
 // for any thread count. Smooth curved neighbourhoods without feature lines within r are matched
 // only through step 1 (motions found at feature points of the same piece) or step 3.
+//
+// Point clouds. A cloud stands in for its surface as disks (splats) in the points' tangent
+// planes, of radius twice the median distance to the 4th nearest point (at most eps), so the
+// disks cover the gaps between points; distances are taken to those disks, whatever their
+// normals (a cloud's normals, fitted or scanned, blur at creases; normal_tolerance_degrees is
+// for meshes); the connected part of a ball links points whose disks overlap; the dense samples
+// are the points thinned to the first in each cube of edge spacing_r * r; test points are points
+// picked at random. The keypoints of step 2 are the cloud's corners (cloud_keypoints), its
+// feature samples points along its creases (cloud_crease_samples), and twice `anchors` of them
+// are tried (their frames are fitted to noisy points). Up to 2 % of a ball's samples may miss
+// the other surface (random gaps at edges and corners), and the distance tolerance widens to
+// 3.5 x the two clouds' combined noise (typical_point_noise) when that is larger, up to eps.
 
 #include "geometry/feature_lines.h"
 #include "geometry/mesh.h"
@@ -68,8 +80,8 @@ struct RSimilarityResult {
 };
 
 /// One side of the comparison: a welded mesh with its feature lines (extract_feature_lines at
-/// spacing eps = r/4), or a point cloud with unit normals with its corners (cloud_keypoints of
-/// its voxel surface at eps).
+/// spacing eps = r/4), or a point cloud with unit normals with its corners and crease samples
+/// (cloud_keypoints and cloud_crease_samples of its voxel surface at eps).
 struct SimilarityInput {
   const TriangleMesh* mesh = nullptr;
   const FeatureLines* feature_lines = nullptr;  ///< with mesh
