@@ -92,7 +92,7 @@ struct SampleOutcome {
   long cached = -1;                     // index of the reused motion that matched
 };
 
-// A cloud point's disk radius in distances to its 4th nearest point: about 14 points in a full
+// A cloud point's disk radius in distances to its 4th nearest point: about 15 points in a full
 // disk, so that a location at an edge has no point within the radius on its side only rarely.
 constexpr double kSplatSpacings = 2.0;
 // Share of a cloud ball's samples that may miss the other surface (gaps at corners).
