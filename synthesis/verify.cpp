@@ -56,7 +56,8 @@ ModelChecks topology_checks(const CleanModel& model) {
   return checks;
 }
 
-// A cleaned point cloud with unit normals (estimated when the file had none) and its corners.
+// A cleaned point cloud with unit normals (fitted when the file had none), its corners and its
+// crease samples.
 struct CleanCloud {
   PointCloud cloud;
   std::vector<Keypoint> keypoints, creases;
