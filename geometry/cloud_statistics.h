@@ -9,17 +9,19 @@
 
 namespace dg {
 
-/// The median, over up to `probes` points picked evenly through the cloud, of the distance to
-/// the k-th nearest other point, capped at `max_distance` (model units; points with fewer than
-/// k others within it count as the cap): how far apart the points lie. Throws InputError for an empty cloud or a non-positive cap.
-double typical_point_spacing(const PointCloud& cloud, double max_distance, std::size_t k = 4,
-                             std::size_t probes = 4000);
+struct PointStatistics {
+  /// The median distance to the 4th nearest other point (points with fewer than 4 others within
+  /// the radius count as the radius): how far apart the points lie. Model units.
+  double spacing = 0.0;
+  /// The median, over points with at least 10 others within the radius, of the root-mean-square
+  /// distance of those points to their least-squares plane (most probes of a built model lie on
+  /// flat parts; creases give larger values); 0 when no probe has that many. Model units.
+  double noise = 0.0;
+};
 
-/// The scatter of points off flat surface: over up to `probes` points picked evenly through the
-/// cloud that have at least 10 others within `radius` (model units), the root-mean-square
-/// distance of those points to their least-squares plane, the median over the probes (most
-/// probes of a built model lie on flat parts; creases give larger values). 0 when no probe has
-/// enough neighbours. Throws InputError for an empty cloud or a non-positive radius.
-double typical_point_noise(const PointCloud& cloud, double radius, std::size_t probes = 4000);
+/// Both statistics over up to `probes` points picked evenly through the cloud, from their
+/// neighbours within `radius` (model units), in one pass. Throws InputError for an empty cloud
+/// or a non-positive radius.
+PointStatistics point_statistics(const PointCloud& cloud, double radius, std::size_t probes = 4000);
 
 }  // namespace dg

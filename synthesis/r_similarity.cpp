@@ -32,10 +32,11 @@ Mat3 frame_of(const Vec3& tangent, const Vec3& normal, const Vec3& binormal) {
 
 // Feature-line ends of a mesh, corners of a cloud.
 std::vector<Anchor> keypoint_anchors(const SimilarityInput& input) {
+  const std::vector<Keypoint> keypoints = input.feature_lines
+                                              ? feature_keypoints(*input.feature_lines)
+                                              : std::vector<Keypoint>(input.cloud_keypoints.begin(), input.cloud_keypoints.end());
   std::vector<Anchor> anchors;
-  const std::vector<Keypoint> line_ends = input.feature_lines ? feature_keypoints(*input.feature_lines) : std::vector<Keypoint>{};
-  for (const Keypoint& k : input.feature_lines ? std::span<const Keypoint>(line_ends) : input.cloud_keypoints)
-    anchors.push_back({k.position, frame_of(k.tangent, k.normal, k.binormal), k.descriptor});
+  for (const Keypoint& k : keypoints) anchors.push_back({k.position, frame_of(k.tangent, k.normal, k.binormal), k.descriptor});
   return anchors;
 }
 
@@ -103,12 +104,17 @@ constexpr std::size_t kCloudAnchorFactor = 2;
 // their noise (about 5 in 10000 samples beyond it).
 constexpr double kNoiseTolerance = 3.5;
 
+// A cloud's sampling statistics within eps = r / 4 (none for a mesh).
+PointStatistics statistics_of(const SimilarityInput& input, double r) {
+  return input.cloud ? point_statistics(*input.cloud, r / 4.0) : PointStatistics{};
+}
+
 // The surface index of one side: dense samples at spacing_r * r, queries up to eps = r / 4.
-SurfaceIndex make_index(const SimilarityInput& input, double r, const RSimilarityOptions& options, std::uint64_t seed) {
+SurfaceIndex make_index(const SimilarityInput& input, const PointStatistics& statistics, double r,
+                        const RSimilarityOptions& options, std::uint64_t seed) {
   const double eps = r / 4.0;
   if (input.mesh) return SurfaceIndex(*input.mesh, options.spacing_r * r, r, eps, seed);
-  return SurfaceIndex(*input.cloud, std::min(eps, kSplatSpacings * typical_point_spacing(*input.cloud, eps)),
-                      options.spacing_r * r, r, eps);
+  return SurfaceIndex(*input.cloud, std::min(eps, kSplatSpacings * statistics.spacing), options.spacing_r * r, r, eps);
 }
 
 class Matcher {
@@ -116,8 +122,10 @@ class Matcher {
   Matcher(const SimilarityInput& exemplar, const SimilarityInput& candidate, double r, const RSimilarityOptions& options)
       : options_(options),
         r_(r),
-        exemplar_index_(make_index(exemplar, r, options, options.seed)),
-        candidate_index_(make_index(candidate, r, options, options.seed + 1)),
+        exemplar_statistics_(statistics_of(exemplar, r)),
+        candidate_statistics_(statistics_of(candidate, r)),
+        exemplar_index_(make_index(exemplar, exemplar_statistics_, r, options, options.seed)),
+        candidate_index_(make_index(candidate, candidate_statistics_, r, options, options.seed + 1)),
         candidate_keypoints_(keypoint_anchors(candidate)),
         candidate_samples_(sample_anchors(candidate)),
         exemplar_keypoints_(keypoint_anchors(exemplar)),
@@ -126,7 +134,7 @@ class Matcher {
     tolerances_.r = r_;
     tolerances_.tolerance = std::min(options.tolerance_eps, 1.0) * eps;
     if (exemplar.cloud) {
-      const double noise = std::hypot(typical_point_noise(*exemplar.cloud, eps), typical_point_noise(*candidate.cloud, eps));
+      const double noise = std::hypot(exemplar_statistics_.noise, candidate_statistics_.noise);
       tolerances_.tolerance = std::min(eps, std::max(tolerances_.tolerance, kNoiseTolerance * noise));
     }
     tolerances_.min_cos = std::cos(options.normal_tolerance_degrees * std::numbers::pi / 180.0);
@@ -315,6 +323,7 @@ class Matcher {
 
   RSimilarityOptions options_;
   double r_;
+  PointStatistics exemplar_statistics_, candidate_statistics_;  // clouds only
   SurfaceIndex exemplar_index_, candidate_index_;
   std::vector<Anchor> candidate_keypoints_, candidate_samples_, exemplar_keypoints_, exemplar_samples_;
   MatchTolerances tolerances_;

@@ -38,7 +38,7 @@
 // feature samples points along its creases (cloud_crease_samples), and twice `anchors` of them
 // are tried (their frames are fitted to noisy points). Up to 2 % of a ball's samples may miss
 // the other surface (random gaps at edges and corners), and the distance tolerance widens to
-// 3.5 x the two clouds' combined noise (typical_point_noise) when that is larger, up to eps.
+// 3.5 x the two clouds' combined noise (point_statistics) when that is larger, up to eps.
 
 #include "geometry/feature_lines.h"
 #include "geometry/mesh.h"

@@ -135,6 +135,12 @@ auto prepare_sides(Model exemplar, Model candidate, const VerifyOptions& options
   return std::make_tuple(std::move(exemplar_clean), std::move(candidate_clean), r);
 }
 
+// The r-similarity check of both kinds: the estimated fraction against the option's minimum.
+CheckResult r_similarity_check(const RSimilarityResult& similarity, const VerifyOptions& options) {
+  return {"r_similarity", similarity.fraction >= options.min_similar_fraction,
+          fmt::format("r-similar fraction >= {}", options.min_similar_fraction)};
+}
+
 // Two point clouds: only r-similarity applies (a cloud has no edges to be closed or faces to
 // intersect).
 VerifyReport verify_clouds(Model exemplar, Model candidate, const VerifyOptions& options, const ProgressCallback& progress) {
@@ -147,8 +153,7 @@ VerifyReport verify_clouds(Model exemplar, Model candidate, const VerifyOptions&
   report.similarity = estimate_r_similarity(similarity_input(exemplar_clean), similarity_input(candidate_clean), r,
                                             options.similarity, progress);
   report.timings.push_back({"r-similarity", clock.lap()});
-  report.checks.push_back({"r_similarity", report.similarity.fraction >= options.min_similar_fraction,
-                           fmt::format("r-similar fraction >= {}", options.min_similar_fraction)});
+  report.checks.push_back(r_similarity_check(report.similarity, options));
   report.pass = report.checks.back().pass;
   return report;
 }
@@ -207,8 +212,7 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
   report.checks.push_back({"self_intersections", exemplar_intersections.any || !candidate_intersections.any,
                            exemplar_intersections.any ? "none (the exemplar self-intersects)"
                                                       : "no intersecting triangle pairs (the exemplar has none)"});
-  report.checks.push_back({"r_similarity", report.similarity.fraction >= options.min_similar_fraction,
-                           fmt::format("r-similar fraction >= {}", options.min_similar_fraction)});
+  report.checks.push_back(r_similarity_check(report.similarity, options));
   report.pass = std::all_of(report.checks.begin(), report.checks.end(), [](const CheckResult& c) { return c.pass; });
   return report;
 }
