@@ -106,13 +106,16 @@ std::vector<std::vector<std::uint32_t>> interchangeable_materials(const std::vec
   return groups;
 }
 
+bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& options, std::size_t grids_found) {
+  return !prepared.model.is_point_cloud() && prepared.model.mesh.has_materials() && prepared.model.materials.size() >= 2 &&
+         grids_found == 0 && !options.match_materials && options.same_materials.empty();
+}
+
 std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const PrepareOptions& options,
                                           const SymmetryOptions& symmetry_options, std::size_t grids_found,
                                           const ProgressCallback& progress) {
+  if (!material_hint_applies(prepared, options, grids_found)) return std::nullopt;
   const std::vector<Material>& materials = prepared.model.materials;
-  if (prepared.model.is_point_cloud() || !prepared.model.mesh.has_materials() || materials.size() < 2 || grids_found > 0 ||
-      options.match_materials || !options.same_materials.empty())
-    return std::nullopt;
   report_progress(progress, "material hint", 0.0);
   // A lighter search first (the repeats sought have strong support): which materials the
   // translations swap, and whether matching materials in those groups gives any grid; only

@@ -38,6 +38,10 @@ std::vector<std::vector<double>> material_swaps(const PreparedModel& prepared, c
 /// returned, as lists of material indices (ascending, groups by their first index).
 std::vector<std::vector<std::uint32_t>> interchangeable_materials(const std::vector<std::vector<double>>& swaps);
 
+/// Whether material_hint searches at all: a mesh with at least two materials, analysed by
+/// geometry alone (`options` match no materials), that gave no grid (`grids_found` == 0).
+bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& options, std::size_t grids_found);
+
 /// A hint for a mesh with materials analysed by geometry alone (`options` match no materials)
 /// that gave no grid: symmetries are detected with materials matched (a lighter search: 4000
 /// keypoints, 150 vote sources, 200k pairs, 16 candidates verified), the materials its translations swap are grouped

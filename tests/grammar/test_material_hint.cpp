@@ -72,7 +72,10 @@ TEST_CASE("material hint: windows in three random tints give their grid once the
   CHECK(hint->groups[0] == std::vector<std::string>{"tint0", "tint1", "tint2"});
   // The painted wall's grid: n cells are n - 1 repeated units in each direction.
   CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{rows - 1, columns - 1}});
-  // No hint when analysis already found a grid or materials were matched.
+  // No hint (no search) when analysis already found a grid or materials were matched.
+  CHECK(dg::material_hint_applies(prepared, {}, 0));
+  CHECK_FALSE(dg::material_hint_applies(prepared, {}, 1));
+  CHECK_FALSE(dg::material_hint_applies(prepared, matched, 0));
   CHECK_FALSE(dg::material_hint(prepared, {}, {}, 1));
   CHECK_FALSE(dg::material_hint(prepared, matched, {}, 0));
 }

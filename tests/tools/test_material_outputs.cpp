@@ -163,6 +163,7 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   const nlohmann::json hint = nlohmann::json::parse(geometric_json.output)["material_hint"];
   CHECK(hint["same_material"] == nlohmann::json::array({nlohmann::json::array({"glass_green", "glass_blue"})}));
   CHECK(hint["grid_counts"].size() == 1);
+  CHECK(nlohmann::json::parse(geometric_json.output)["timings_s"].contains("material hint"));
 
   const dg::test::CliRun info = dg::test::run_cli("info " + model + " --json --same-material 'glass_*'", folder);
   REQUIRE(info.status == 0);
@@ -185,6 +186,7 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(text.find("`glass_green`, `glass_blue` count as one") != std::string::npos);
   CHECK(text.find("Hint: the model's repeats are drawn in materials") == std::string::npos);
+  CHECK_FALSE(result["timings_s"].contains("material hint"));  // matched materials: no hint search, no timing
 
   const dg::test::CliRun unknown = dg::test::run_cli("info " + model + " --same-material 'glas,wall'", folder);
   CHECK(unknown.status == 2);

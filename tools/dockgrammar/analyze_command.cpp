@@ -66,9 +66,12 @@ void add_analyze_command(CLI::App& app) {
     }
     const std::optional<ToleranceHint> hint = tolerance_hint(prepared, symmetries, grammar.grids);
     grammar_timings.push_back({"grid rules", stopwatch.lap()});
-    const std::optional<MaterialHint> materials = material_hint(prepared, options->model.prepare, symmetry_options(options->tolerance_eps),
-                                                                grammar.grids.size(), progress);
-    grammar_timings.push_back({"material hint", stopwatch.lap()});
+    std::optional<MaterialHint> materials;
+    if (material_hint_applies(prepared, options->model.prepare, grammar.grids.size())) {  // timed only when it runs
+      materials = material_hint(prepared, options->model.prepare, symmetry_options(options->tolerance_eps), grammar.grids.size(),
+                                progress);
+      grammar_timings.push_back({"material hint", stopwatch.lap()});
+    }
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries, {}, progress);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
     ContextFreeOptions cf_options;

@@ -148,11 +148,17 @@ std::string vec(const Vec3& v) {
   return fmt::format("({:.6g}, {:.6g}, {:.6g})", clean(v.x()), clean(v.y()), clean(v.z()));
 }
 
+// Every stage's time in pipeline order: preparation, symmetry detection, grammar.
+std::vector<StageTiming> stage_timings(const AnalysisReport& report) {
+  std::vector<StageTiming> timings = report.prepared.timings;
+  for (const StageTiming& t : report.symmetries.timings) timings.push_back({"symmetry " + t.stage, t.seconds});
+  timings.insert(timings.end(), report.grammar_timings.begin(), report.grammar_timings.end());
+  return timings;
+}
+
 nlohmann::json timings_json(const AnalysisReport& report) {
   nlohmann::json timings = nlohmann::json::object();
-  for (const StageTiming& t : report.prepared.timings) timings[t.stage] = t.seconds;
-  for (const StageTiming& t : report.symmetries.timings) timings["symmetry " + t.stage] = t.seconds;
-  for (const StageTiming& t : report.grammar_timings) timings[t.stage] = t.seconds;
+  for (const StageTiming& t : stage_timings(report)) timings[t.stage] = t.seconds;
   return timings;
 }
 
@@ -496,8 +502,7 @@ void write_analysis_report(const AnalysisReport& report) {
   }
   md += context_free_markdown(report);
   md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", missing_text());
-  const nlohmann::json timings = timings_json(report);
-  for (const auto& [stage, seconds] : timings.items()) md += fmt::format("- {}: {:.3f}\n", stage, seconds.get<double>());
+  for (const StageTiming& t : stage_timings(report)) md += fmt::format("- {}: {:.3f}\n", t.stage, t.seconds);
   write_file_atomically(report.report_path, [&](std::ostream& out) { out << md; }, false);
 }
 
