@@ -158,6 +158,15 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   std::ifstream plain_report(folder / "plain" / "stripes.report.md");
   const std::string plain_text((std::istreambuf_iterator<char>(plain_report)), std::istreambuf_iterator<char>());
   CHECK(plain_text.find("`--same-material 'glass_green,glass_blue'` gives a 1-grid") != std::string::npos);
+  // The report's stage times follow the pipeline, the hint's search between grids and docking sites.
+  std::size_t previous = 0;
+  for (const char* stage : {"- load:", "- voxel surface:", "- symmetry candidates:", "- grid rules:", "- material hint:",
+                            "- docking sites:", "- context-free rules:"}) {
+    const std::size_t at = plain_text.find(stage);
+    REQUIRE(at != std::string::npos);
+    CHECK(at > previous);
+    previous = at;
+  }
   const dg::test::CliRun geometric_json =
       dg::test::run_cli("analyze " + model + " -q --json -o " + (folder / "plain").string(), folder);
   const nlohmann::json hint = nlohmann::json::parse(geometric_json.output)["material_hint"];
