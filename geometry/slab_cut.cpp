@@ -1,13 +1,9 @@
 #include "geometry/slab_cut.h"
 
-#include "geometry/cell_key.h"
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <numeric>
-#include <unordered_map>
 
 namespace dg {
 namespace {
@@ -111,55 +107,6 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
   const auto [a, b, c] = mesh.corners(t);
   const double s = direction.dot((a + b + c) / 3.0);
   return static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), s) - cuts.begin());
-}
-
-std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, const std::vector<char>* only) {
-  const double cell = std::max(tolerance, 1e-300) * 4.0;
-  auto key = [&](const Vec3& p) { return cell_key(p, cell); };
-  // Kept vertices per grid cell as intrusive lists: bucket head, then `next` per kept vertex.
-  constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
-  std::unordered_map<CellKey, std::uint32_t, CellKeyHash> head;
-  head.reserve(mesh.positions.size());
-  std::vector<std::uint32_t> next;
-  std::vector<std::uint32_t> remap(mesh.positions.size());
-  std::vector<Vec3> kept;
-  kept.reserve(mesh.positions.size());
-  next.reserve(mesh.positions.size());
-  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
-    const Vec3& p = mesh.positions[v];
-    if (only && !(*only)[v]) {  // kept as it is, never merged
-      remap[v] = static_cast<std::uint32_t>(kept.size());
-      kept.push_back(p);
-      next.push_back(kEnd);
-      continue;
-    }
-    const auto k = key(p);
-    std::uint32_t found = kEnd;
-    for (std::int64_t dx = -1; dx <= 1 && found == kEnd; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && found == kEnd; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && found == kEnd; ++dz) {
-          const auto bucket = head.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (bucket == head.end()) continue;
-          for (std::uint32_t w = bucket->second; w != kEnd; w = next[w])
-            if ((kept[w] - p).norm() <= tolerance) {
-              found = w;
-              break;
-            }
-        }
-    if (found == kEnd) {
-      found = static_cast<std::uint32_t>(kept.size());
-      kept.push_back(p);
-      const auto [bucket, inserted] = head.try_emplace(k, found);
-      next.push_back(inserted ? kEnd : bucket->second);
-      bucket->second = found;
-    }
-    remap[v] = found;
-  }
-  for (Triangle& tri : mesh.triangles)
-    for (std::uint32_t& v : tri) v = remap[v];
-  mesh.positions = std::move(kept);
-  drop_repeated_corners(mesh);
-  return remap;
 }
 
 void drop_repeated_corners(TriangleMesh& mesh) {

@@ -26,10 +26,4 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
 /// and materials.
 void drop_repeated_corners(TriangleMesh& mesh);
 
-/// Merges vertices closer than `tolerance` (model units) into the first of them (in index
-/// order) and drops triangles that become degenerate (the others keep their materials). With `only` (one flag per vertex), only
-/// flagged vertices are merged, with each other; the rest are kept as they are. Returns the new
-/// index of every old vertex. Deterministic.
-std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance, const std::vector<char>* only = nullptr);
-
 }  // namespace dg

@@ -2,6 +2,7 @@
 
 #include "geometry/cell_key.h"
 #include "geometry/slab_cut.h"
+#include "geometry/vertex_weld.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,15 +108,45 @@ std::vector<char> open_edge_vertices(const TriangleMesh& mesh) {
   return open;
 }
 
-std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<char>* seam_vertices) {
+void append_seam_labels(std::vector<std::uint32_t>& labels, const std::vector<char>& open, std::uint32_t copy) {
+  for (char on_seam : open) labels.push_back(on_seam ? copy : kNotOnSeam);
+}
+
+std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>* seam_copies,
+                                double same_copy_tolerance) {
+  // With labels, the copy of each triangle (of its seam corners), kept through the weld, which
+  // drops the triangles whose corners merge.
+  std::vector<std::uint32_t> triangle_copy;
+  const std::vector<Triangle> unwelded = seam_copies ? mesh.triangles : std::vector<Triangle>{};
+  const std::vector<std::uint32_t> remap = weld_vertices(mesh, tolerance, seam_copies, same_copy_tolerance);
   std::vector<char> seam;
-  const std::vector<std::uint32_t> remap = weld_vertices(mesh, tolerance, seam_vertices);
-  if (seam_vertices) {
+  // With labels, the copies whose vertices each welded vertex joins.
+  std::vector<std::vector<std::uint32_t>> copies_of;
+  if (seam_copies) {
     seam.assign(mesh.positions.size(), 0);
+    copies_of.resize(mesh.positions.size());
     for (std::size_t v = 0; v < remap.size(); ++v)
-      if ((*seam_vertices)[v]) seam[remap[v]] = 1;
+      if ((*seam_copies)[v] != kNotOnSeam) {
+        seam[remap[v]] = 1;
+        copies_of[remap[v]].push_back((*seam_copies)[v]);
+      }
+    for (const Triangle& tri : unwelded) {
+      const std::uint32_t a = remap[tri[0]], b = remap[tri[1]], c = remap[tri[2]];
+      if (a == b || b == c || c == a) continue;
+      std::uint32_t copy = kNotOnSeam;
+      for (std::uint32_t v : tri) copy = std::min(copy, (*seam_copies)[v]);
+      triangle_copy.push_back(copy);
+    }
   }
-  const std::vector<char>* only = seam_vertices ? &seam : nullptr;
+  const std::vector<char>* only = seam_copies ? &seam : nullptr;
+  // A vertex of an edge's own copy farther from it than `same_copy_tolerance` lies on it within
+  // that copy's piece: a touching part of the copy, which the edge does not meet in the piece
+  // either, so it does not split the edge (a closer one closes a crack of the piece).
+  auto splits_edge = [&](std::uint32_t v, std::uint32_t triangle, double distance) {
+    if (distance > tolerance) return false;
+    if (!seam_copies || distance <= same_copy_tolerance) return true;
+    return std::find(copies_of[v].begin(), copies_of[v].end(), triangle_copy[triangle]) == copies_of[v].end();
+  };
   // Split triangles keep their index (the first part replaces them, the others are appended),
   // so the list of triangles that can hold seam edges only grows.
   std::vector<std::uint32_t> candidates = seam_triangles(mesh, only);
@@ -147,8 +178,7 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
       grid.for_each_near(pa.cwiseMin(pb) - Vec3::Constant(tolerance), pa.cwiseMax(pb) + Vec3::Constant(tolerance),
                          [&](std::uint32_t v) {
                            const double s = (mesh.positions[v] - pa).dot(ab) / length2;
-                           if (v != a && v != b && s > 0.0 && s < 1.0 &&
-                               (pa + s * ab - mesh.positions[v]).norm() <= tolerance)
+                           if (v != a && v != b && s > 0.0 && s < 1.0 && splits_edge(v, t, (pa + s * ab - mesh.positions[v]).norm()))
                              inner.emplace_back(s, v);
                          });
       if (inner.empty()) continue;
@@ -171,6 +201,7 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
     for (const auto& [source, part] : added) {
       candidates.push_back(static_cast<std::uint32_t>(mesh.triangles.size()));
       mesh.triangles.push_back(part);
+      if (seam_copies) triangle_copy.push_back(triangle_copy[source]);
       if (has_materials) mesh.materials.push_back(mesh.materials[source]);
     }
   }

@@ -3,6 +3,7 @@
 // an edge of the other (a T-junction) splits that edge, so the seam becomes shared edges.
 
 #include "geometry/mesh.h"
+#include "geometry/vertex_weld.h"
 
 namespace dg {
 
@@ -10,13 +11,21 @@ namespace dg {
 /// units, strictly between its ends), then welds vertices closer than `tolerance`. Returns the
 /// number of edge splits. Assembled pieces whose seams coincide geometrically become closed. A
 /// sliver whose third corner lies on its own split edge has no area and is dropped.
-/// With `seam_vertices` (one flag per vertex: the vertices on the open edges of the assembled
-/// pieces), only those are welded and only edges between them are examined, which is much
-/// faster on large assemblies and gives the same result when the flags cover every open edge.
-std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<char>* seam_vertices = nullptr);
+/// With `seam_copies` (one label per vertex: the placed copy of a piece whose open edge the
+/// vertex lies on, kNotOnSeam for the other vertices, see append_seam_labels), only seam vertices
+/// are welded, each to the nearest within `tolerance` that no vertex of its own copy joined
+/// unless within `same_copy_tolerance` (two parts of one copy that touch stay apart, as in the
+/// piece; see weld_vertices), and only edges between them are examined, which is much faster on
+/// large assemblies.
+std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>* seam_copies = nullptr,
+                                double same_copy_tolerance = 0.0);
 
 /// One flag per vertex of `mesh`: 1 when the vertex lies on an open edge (an edge used by one
-/// triangle only). Pieces' flags, concatenated, are the `seam_vertices` of their assembly.
+/// triangle only). append_seam_labels turns a placed copy's flags into seam labels.
 std::vector<char> open_edge_vertices(const TriangleMesh& mesh);
+
+/// Appends the seam labels of one placed copy of a piece to `labels`: `copy` for the vertices
+/// flagged in `open` (open_edge_vertices of the piece), kNotOnSeam for the others.
+void append_seam_labels(std::vector<std::uint32_t>& labels, const std::vector<char>& open, std::uint32_t copy);
 
 }  // namespace dg

@@ -3,6 +3,7 @@
 #include "geometry/errors.h"
 #include "geometry/flat_faces.h"
 #include "geometry/t_junctions.h"
+#include "grammar/seam_curve.h"
 
 #include <fmt/format.h>
 
@@ -70,8 +71,9 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   result.positions.reserve(vertices);
   result.triangles.reserve(triangles);
   if (with_materials) result.materials.reserve(triangles);
-  std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
-  seam_vertices.reserve(vertices);
+  std::vector<std::uint32_t> seam_copies;  // per vertex of the result: its copy when on an open edge of its piece
+  seam_copies.reserve(vertices);
+  std::uint32_t copy = 0;
   for (std::size_t p = 0; p < pieces.size(); ++p) {
     const TriangleMesh& mesh = pieces[p].mesh;
     const std::vector<char> open = open_edge_vertices(mesh);
@@ -80,10 +82,10 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
       for (const Vec3& position : mesh.positions) result.positions.push_back(placement.apply(position));
       for (const Triangle& t : mesh.triangles) result.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
       if (with_materials) result.materials.insert(result.materials.end(), mesh.materials.begin(), mesh.materials.end());
-      seam_vertices.insert(seam_vertices.end(), open.begin(), open.end());
+      append_seam_labels(seam_copies, open, copy++);
     }
   }
-  resolve_t_junctions(result, grid_weld_tolerance(grid, eps), &seam_vertices);
+  resolve_t_junctions(result, grid_weld_tolerance(grid, eps), &seam_copies, kSeamWeldFloorFraction * eps);
   return merge_flat_faces(result);
 }
 

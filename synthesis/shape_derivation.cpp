@@ -5,6 +5,7 @@
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "geometry/random.h"
+#include "grammar/seam_curve.h"
 #include "synthesis/piece_collision.h"
 
 #include <algorithm>
@@ -76,7 +77,8 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
   PieceCollisions collisions(seam_tolerance);
   std::size_t triangles = 0;
   std::deque<OpenSlot> open;
-  std::vector<char> seam_vertices;  // per vertex of the result: lies on an open edge of its piece
+  std::uint32_t placed = 0;  // pieces placed so far
+  std::vector<std::uint32_t> seam_copies;  // per vertex of the result: its placed piece when on an open edge of it
   std::vector<std::vector<char>> open_of(grammar.productions.size() + 1);  // cache, filled on first use; the axiom last
   std::vector<char> open_known(grammar.productions.size() + 1, 0);
   // Adds production `index` (the axiom for productions.size()) already moved to `world` as
@@ -84,7 +86,7 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
   auto place = [&](std::size_t index, const RigidTransform& world, int depth, const TriangleMesh& piece) {
     const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
     if (!open_known[index]) open_of[index] = open_edge_vertices(p.terminal), open_known[index] = 1;
-    seam_vertices.insert(seam_vertices.end(), open_of[index].begin(), open_of[index].end());
+    append_seam_labels(seam_copies, open_of[index], placed++);
     append_mesh(result.mesh, piece);
     if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
     triangles += piece.triangles.size();
@@ -130,7 +132,7 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
   if (options.weld_seams) {
-    resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_vertices);
+    resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_copies, kSeamWeldFloorFraction * eps);
     result.mesh = merge_flat_faces(result.mesh);
   }
   return result;

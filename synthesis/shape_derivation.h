@@ -55,7 +55,8 @@ struct ShapeDerivation {
 bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options);
 
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:
-/// seams are welded within seam_weld_tolerance (grammar/context_free.h). Deterministic for a
+/// seams of different placed pieces are welded within seam_weld_tolerance (grammar/context_free.h),
+/// vertices of one piece only within 1e-4 eps (see resolve_t_junctions). Deterministic for a
 /// given seed.
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options);
 

@@ -31,7 +31,11 @@ TEST_CASE("T-junction on a seam: the long edge is split and the seam closes", "[
     const std::vector<char> open = dg::open_edge_vertices(mesh);
     // Every vertex of these two open squares lies on an open edge.
     CHECK(std::count(open.begin(), open.end(), 1) == 9);
-    const std::size_t splits = dg::resolve_t_junctions(mesh, 1e-6, with_flags ? &open : nullptr);
+    // The left square is copy 0, the right one copy 1.
+    std::vector<std::uint32_t> copies;
+    dg::append_seam_labels(copies, std::vector<char>(open.begin(), open.begin() + 4), 0);
+    dg::append_seam_labels(copies, std::vector<char>(open.begin() + 4, open.end()), 1);
+    const std::size_t splits = dg::resolve_t_junctions(mesh, 1e-6, with_flags ? &copies : nullptr);
     CHECK(splits == 1);
     CHECK(mesh.positions.size() == 7);  // (1, 0) and (1, 1) welded
     CHECK(mesh.triangles.size() == 6);
@@ -76,4 +80,73 @@ TEST_CASE("a sliver whose third corner lies on its own open edge is dropped, not
   CHECK(mesh.triangles[0] == dg::Triangle{a, c, d});
   CHECK(mesh.materials == std::vector<std::uint32_t>{1});
   CHECK(dg::edge_statistics(mesh).boundary_edges == 3);
+}
+
+namespace {
+
+// A unit square [x0, x0 + 1] x [0, 1] in the plane z, fanned around its centre; with
+// `midpoints`, its left and right sides have a vertex at y = 0.5.
+dg::TriangleMesh square_part(double x0, double z, bool midpoints) {
+  dg::TriangleMesh mesh;
+  std::vector<Vec3> ring{Vec3(x0, 0, z), Vec3(x0 + 1, 0, z)};
+  if (midpoints) ring.push_back(Vec3(x0 + 1, 0.5, z));
+  ring.push_back(Vec3(x0 + 1, 1, z));
+  ring.push_back(Vec3(x0, 1, z));
+  if (midpoints) ring.push_back(Vec3(x0, 0.5, z));
+  mesh.positions = ring;
+  mesh.positions.push_back(Vec3(x0 + 0.5, 0.5, z));
+  const auto centre = static_cast<std::uint32_t>(ring.size());
+  for (std::uint32_t i = 0; i < centre; ++i) mesh.triangles.push_back({i, (i + 1) % centre, centre});
+  return mesh;
+}
+
+void append(dg::TriangleMesh& to, const dg::TriangleMesh& part) {
+  const auto base = static_cast<std::uint32_t>(to.positions.size());
+  to.positions.insert(to.positions.end(), part.positions.begin(), part.positions.end());
+  for (const dg::Triangle& t : part.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+}  // namespace
+
+TEST_CASE("two touching parts of one copy stay apart when copies are welded", "[geometry][t_junctions]") {
+  // Each copy holds two parts 2e-5 apart, closer than the weld tolerance 1e-4: a plain square
+  // and one whose sides have a midpoint (lying on the plain square's sides within the tolerance).
+  // Copy 1 is copy 0 moved by 1 along x; their seam is the plane x = 1.
+  dg::TriangleMesh mesh;
+  std::vector<std::uint32_t> copies;
+  for (std::uint32_t copy = 0; copy < 2; ++copy) {
+    for (const bool midpoints : {false, true}) {
+      const dg::TriangleMesh part = square_part(copy, midpoints ? 2e-5 : 0.0, midpoints);
+      append(mesh, part);
+      dg::append_seam_labels(copies, dg::open_edge_vertices(part), copy);
+    }
+  }
+  SECTION("labelled: each part closes with its own counterpart") {
+    dg::resolve_t_junctions(mesh, 1e-4, &copies, 1e-9);
+    const dg::EdgeStatistics edges = dg::edge_statistics(mesh);
+    CHECK(edges.non_manifold_edges == 0);
+    CHECK(edges.boundary_edges == 6 + 8);  // the outer sides of the two 2 x 1 rectangles
+    CHECK(mesh.area() == Approx(4.0));
+  }
+  SECTION("unlabelled: the parts are welded to each other") {
+    dg::resolve_t_junctions(mesh, 1e-4);
+    CHECK(dg::edge_statistics(mesh).non_manifold_edges > 0);
+  }
+}
+
+TEST_CASE("labelled weld: duplicate vertices of one copy merge within the same-copy tolerance", "[geometry][t_junctions]") {
+  // One copy's square split into two triangles with unshared corners (as unwelded files have),
+  // and copy 1 beside it.
+  dg::TriangleMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+  append(mesh, square_part(1, 0, false));
+  std::vector<std::uint32_t> copies(6, 0);
+  copies.resize(mesh.positions.size(), 1);
+  copies.back() = dg::kNotOnSeam;  // the centre of copy 1
+  dg::resolve_t_junctions(mesh, 1e-4, &copies, 1e-9);
+  const dg::EdgeStatistics edges = dg::edge_statistics(mesh);
+  CHECK(edges.boundary_edges == 6);
+  CHECK(edges.non_manifold_edges == 0);
+  CHECK(mesh.positions.size() == 7);
 }
