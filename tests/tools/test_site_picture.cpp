@@ -75,6 +75,13 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
     listed.insert(fs::path(png.get<std::string>()).filename().string());
   }
   CHECK(listed == std::set<std::string>{"fence_4.grid1.png", "fence_4.rules.png", "fence_4.sites.png"});
+  // What the fence shows but analyze could not use: only docking sites whose dockers do not fit.
+  // Its translation gives its grid, and its posts' and rails' quarter turns close full turns.
+  const nlohmann::json& missing = summary.at("missing");
+  REQUIRE(missing.is_array());
+  REQUIRE(missing.size() == 1);
+  CHECK(missing[0].get<std::string>().find("docking sites whose docker") != std::string::npos);
+  CHECK(text.find("## Not yet built\n\n- ") != std::string::npos);
 
   // The gear's rotations leave no docking site: no picture, and the report names none.
   const dg::test::AnalyzedModel gear = dg::test::analyze_model("gear_12", folder / "gear");
@@ -83,4 +90,7 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
   std::ifstream gear_report(folder / "gear" / "gear_12.report.md");
   const std::string gear_text((std::istreambuf_iterator<char>(gear_report)), std::istreambuf_iterator<char>());
   CHECK(gear_text.find(".sites.png") == std::string::npos);
+  // Its 12 teeth close a full turn, which no grid can extend: nothing is listed as not built.
+  CHECK(gear_text.find("Not yet built") == std::string::npos);
+  CHECK(gear.run.output.find("not built") == std::string::npos);
 }

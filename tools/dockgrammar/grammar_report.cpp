@@ -9,6 +9,7 @@
 #include "grammar/seam_curve.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/docking_site_picture.h"
+#include "tools/dockgrammar/not_built.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
 
@@ -21,7 +22,6 @@
 namespace dg::cli {
 namespace {
 
-// What analyze does not build yet (one sentence, for the summary, the JSON and the report).
 // Why a point cloud has no context-free rules.
 constexpr const char* kPointCloudRules =
     "not built for point clouds (their pieces are cut along seam surfaces through triangles; the grid rules cut "
@@ -45,15 +45,6 @@ std::string cloud_density_text(const PreparedModel& prepared) {
     text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 3 points per voxel and more, part of it "
             "at 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for twice r)";
   return text;
-}
-
-std::string missing_text() {
-  return fmt::format("grids of pure rotations (no slide along the axis) are not built; grid planes cross the whole model "
-                     "but for separate parts kept whole, so a repetition that connected geometry not repeating with it "
-                     "lies across gives no grid; docking sites that slide along "
-                     "themselves, or whose docker cut at one location lies more than {:g} eps from the seam at the other, "
-                     "give no context-free production",
-                     kSeamFitFraction);
 }
 
 // NAME of the model's NAME.grammar.json, NAME.report.md and pictures.
@@ -371,7 +362,8 @@ std::string analysis_text(const AnalysisReport& report) {
   std::string pictures;
   for (const std::filesystem::path& png : report.pictures) pictures += (pictures.empty() ? "" : ", ") + png.filename().string();
   if (!pictures.empty()) out += fmt::format("pictures (and coloured .ply of each): {}\n", pictures);
-  out += fmt::format("not built: {}\n", missing_text());
+  if (const std::vector<std::string> items = not_built_items(report); !items.empty())
+    out += fmt::format("not built: {}\n", fmt::join(items, "; "));
   return out;
 }
 
@@ -434,7 +426,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"report_file", report.report_path.string()},
           {"pictures", pictures_json(report)},
           {"timings_s", timings_json(report)},
-          {"missing", missing_text()}};
+          {"missing", not_built_items(report)}};
 }
 
 void write_analysis_report(const AnalysisReport& report) {
@@ -501,7 +493,12 @@ void write_analysis_report(const AnalysisReport& report) {
                         grid.rule.seam_misfit / report.grammar.eps, grid_weld_tolerance(grid.rule, report.grammar.eps) / report.grammar.eps);
   }
   md += context_free_markdown(report);
-  md += fmt::format("## Not yet built\n\n{}.\n\n## Timings (seconds)\n\n", missing_text());
+  if (const std::vector<std::string> items = not_built_items(report); !items.empty()) {
+    md += "## Not yet built\n\n";
+    for (const std::string& item : items) md += fmt::format("- {}.\n", item);
+    md += "\n";
+  }
+  md += "## Timings (seconds)\n\n";
   for (const StageTiming& t : stage_timings(report)) md += fmt::format("- {}: {:.3f}\n", t.stage, t.seconds);
   write_file_atomically(report.report_path, [&](std::ostream& out) { out << md; }, false);
 }

@@ -38,7 +38,8 @@ std::string analysis_text(const AnalysisReport& report);
 /// {r, eps, materials (names), match_materials, material_groups, material_hint (null, or
 /// {same_material: [[names]] (empty: --match-materials alone), grid_counts}), symmetries, families,
 /// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,
-/// transforms, count_range, pieces}], grammar_file, timings_s, missing}.
+/// transforms, count_range, pieces}], grammar_file, timings_s, missing (what this model shows that
+/// analyze could not turn into rules, one sentence each, see not_built_items)}.
 nlohmann::json analysis_json(const AnalysisReport& report);
 
 /// report.report_path (NAME.report.md): cleaning, symmetries, grids with counts and pieces,

@@ -1,0 +1,38 @@
+#include "grammar/unused_repeats.h"
+
+#include <Eigen/QR>
+
+#include <cmath>
+#include <numbers>
+
+namespace dg {
+namespace {
+
+// Whether translation `t` lies (within 1 degree) in the span of the direction translations of
+// some grid of `grids` (a 2-grid's diagonal steps included).
+bool in_a_grid(const Vec3& t, const std::vector<GridRule>& grids) {
+  if (t.norm() <= 0.0) return false;
+  for (const GridRule& grid : grids) {
+    Eigen::MatrixXd span(3, static_cast<Eigen::Index>(grid.directions.size()));
+    for (std::size_t i = 0; i < grid.directions.size(); ++i) span.col(static_cast<Eigen::Index>(i)) = grid.directions[i].translation;
+    const Vec3 in_span = span * span.colPivHouseholderQr().solve(t);
+    if ((t - in_span).norm() <= std::sin(std::numbers::pi / 180.0) * t.norm()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+UnusedRepeats unused_repeats(const SymmetryResult& symmetries, const std::vector<GridRule>& grids, int min_repeats) {
+  UnusedRepeats unused;
+  for (std::size_t f = 0; f < symmetries.families.size(); ++f) {
+    const SymmetryFamily& family = symmetries.families[f];
+    if (static_cast<int>(family.count) < min_repeats) continue;
+    const bool full_turn = family.order > 0 && static_cast<int>(family.count) >= family.order - 1;
+    if (family.kind == "rotation" && !full_turn) unused.partial_turns.push_back(f);
+    if (family.kind == "translation" && !in_a_grid(family.generator.translation, grids)) unused.translations.push_back(f);
+  }
+  return unused;
+}
+
+}  // namespace dg

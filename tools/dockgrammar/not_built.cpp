@@ -1,0 +1,68 @@
+#include "tools/dockgrammar/not_built.h"
+
+#include "grammar/seam_curve.h"
+#include "grammar/unused_repeats.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace dg::cli {
+namespace {
+
+// At most this many families are named in one sentence; the rest are counted.
+constexpr std::size_t kNamedFamilies = 3;
+
+// "F3 (13 repeats of |t| = 16.8)" or "F1 (16-fold, 15 repeats)".
+std::string family_text(const SymmetryResult& symmetries, std::size_t f) {
+  const SymmetryFamily& family = symmetries.families[f];
+  if (family.kind == "rotation") {
+    const double trace = family.generator.rotation.trace();
+    const double degrees = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    return family.order > 0 ? fmt::format("F{} ({} repeats of {}-fold)", f + 1, family.count, family.order)
+                            : fmt::format("F{} ({} repeats of {:.3g} deg)", f + 1, family.count, degrees);
+  }
+  return fmt::format("F{} ({} repeats of |t| = {:.3g})", f + 1, family.count, family.generator.translation.norm());
+}
+
+// "rotation F1 (...)" / "rotations F1 (...), F4 (...) and 2 more".
+std::string families_text(const SymmetryResult& symmetries, const std::vector<std::size_t>& families, const char* kind) {
+  std::string text = fmt::format("{}{}", kind, families.size() == 1 ? "" : "s");
+  const std::size_t named = std::min(families.size(), kNamedFamilies);
+  for (std::size_t i = 0; i < named; ++i)
+    text += (i == 0 ? " " : (i + 1 == named && named == families.size() ? " and " : ", ")) + family_text(symmetries, families[i]);
+  if (families.size() > named) text += fmt::format(" and {} more", families.size() - named);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> not_built_items(const AnalysisReport& report) {
+  std::vector<GridRule> grids;
+  for (const GridWithPieces& grid : report.grammar.grids) grids.push_back(grid.rule);
+  UnusedRepeats unused = unused_repeats(report.symmetries, grids, GridOptions{}.min_repeats);
+  if (report.tolerance_hint)
+    std::erase(unused.translations, report.tolerance_hint->family);  // the hint names it with a remedy
+  std::vector<std::string> items;
+  if (!unused.partial_turns.empty())
+    items.push_back(fmt::format("{} give{} no grid: grids of pure rotations (no slide along the axis) are not built",
+                                families_text(report.symmetries, unused.partial_turns, "rotation"),
+                                unused.partial_turns.size() == 1 ? "s" : ""));
+  if (!unused.translations.empty())
+    items.push_back(fmt::format("{} give{} no grid: grid planes cross the whole model but for separate parts kept whole, "
+                                "and no such planes cut it into slabs that repeat (geometry that does not repeat with "
+                                "the units lies across them)",
+                                families_text(report.symmetries, unused.translations, "translation"),
+                                unused.translations.size() == 1 ? "s" : ""));
+  const ContextFreeStats& stats = report.context_free;
+  if (!stats.point_cloud && stats.sites_without_fit > 0)
+    items.push_back(fmt::format("{} docking site{} whose docker, cut at one location, lies more than {:g} eps from the seam "
+                                "at the other give{} no context-free production",
+                                stats.sites_without_fit, stats.sites_without_fit == 1 ? "" : "s", kSeamFitFraction,
+                                stats.sites_without_fit == 1 ? "s" : ""));
+  return items;
+}
+
+}  // namespace dg::cli

@@ -1,0 +1,18 @@
+#pragma once
+// What analyze found in a model but could not turn into rules, named for that model: the
+// "not built" line of the summary, the report's "Not yet built" section and `--json`'s `missing`.
+
+#include "tools/dockgrammar/grammar_report.h"
+
+#include <string>
+#include <vector>
+
+namespace dg::cli {
+
+/// One sentence per limit of analyze that this model meets (empty when it meets none): rotation
+/// families that repeat short of a full turn (grids of pure rotations are not built),
+/// translation families that repeat but gave no grid (other than the one a tolerance hint
+/// names), docking sites dropped for a docker that does not fit the other location's seam.
+std::vector<std::string> not_built_items(const AnalysisReport& report);
+
+}  // namespace dg::cli
