@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <numbers>
 
 namespace dg::cli {
@@ -18,11 +17,8 @@ constexpr std::size_t kNamedFamilies = 3;
 // "F3 (13 repeats of |t| = 16.8)" or "F6 (4 repeats of 18 deg)".
 std::string family_text(const SymmetryResult& symmetries, std::size_t f) {
   const SymmetryFamily& family = symmetries.families[f];
-  if (family.kind == "rotation") {
-    const double trace = family.generator.rotation.trace();
-    const double degrees = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-    return fmt::format("F{} ({} repeats of {:.3g} deg)", f + 1, family.count, degrees);
-  }
+  if (family.kind == "rotation")
+    return fmt::format("F{} ({} repeats of {:.3g} deg)", f + 1, family.count, family.generator.angle() * 180.0 / std::numbers::pi);
   return fmt::format("F{} ({} repeats of |t| = {:.3g})", f + 1, family.count, family.generator.translation.norm());
 }
 
