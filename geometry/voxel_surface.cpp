@@ -13,16 +13,24 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <queue>
 #include <string>
 
 namespace dg {
 
 struct VoxelSurface::Grid {
-  openvdb::Int32Grid::Ptr index;  // voxel -> cell index, background -1
+  openvdb::Int32Grid::Ptr index;  // voxel -> cell index, background -1, never changed once built
+  std::uint64_t id = next_grid_id();  // unique in the process: names the grid for cached lookups
+
+  static std::uint64_t next_grid_id() {
+    static std::atomic<std::uint64_t> next{1};
+    return next++;
+  }
 };
 
 VoxelSurface::VoxelSurface() = default;
@@ -409,7 +417,18 @@ VoxelCoord VoxelSurface::voxel_of(const Vec3& p) const {
 
 std::int64_t VoxelSurface::find(const VoxelCoord& voxel) const {
   if (!grid_) return -1;
-  return grid_->index->tree().getValue(openvdb::Coord(voxel[0], voxel[1], voxel[2]));
+  // Each thread keeps an accessor to the grid it looked in last: it caches the tree nodes of the
+  // previous lookup, so a lookup next to it (most are) skips the descent from the root. The
+  // accessor is not registered with the tree (cheap to make; the grid never changes) and is
+  // replaced when another grid is asked, known by its id (never reused, unlike an address).
+  using Accessor = openvdb::tree::ValueAccessor<const openvdb::Int32Tree, /*IsSafe=*/false>;
+  thread_local std::uint64_t accessor_grid = 0;
+  thread_local std::optional<Accessor> accessor;
+  if (accessor_grid != grid_->id) {
+    accessor.emplace(grid_->index->constTree());
+    accessor_grid = grid_->id;
+  }
+  return accessor->getValue(openvdb::Coord(voxel[0], voxel[1], voxel[2]));
 }
 
 std::vector<std::uint32_t> VoxelSurface::components(std::size_t* component_count) const {

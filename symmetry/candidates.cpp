@@ -41,11 +41,12 @@ class KeypointGrid {
                double dihedral_tolerance) const {
     long best = -1;
     double best_distance = radius;
-    const auto base = coords(p);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto found = buckets_.find(pack(base[0] + dx, base[1] + dy, base[2] + dz));
+    // Only the cells the ball of `radius` around p overlaps (at most two along each axis).
+    const auto low = coords(p - Vec3::Constant(radius)), high = coords(p + Vec3::Constant(radius));
+    for (std::int64_t x = low[0]; x <= high[0]; ++x)
+      for (std::int64_t y = low[1]; y <= high[1]; ++y)
+        for (std::int64_t z = low[2]; z <= high[2]; ++z) {
+          const auto found = buckets_.find(pack(x, y, z));
           if (found == buckets_.end()) continue;
           for (std::uint32_t i : found->second) {
             const double d = (keypoints_[i].position - p).norm();
