@@ -18,7 +18,6 @@
 #include <mutex>
 #include <numbers>
 #include <optional>
-#include <queue>
 #include <string>
 
 namespace dg {
@@ -227,16 +226,14 @@ class VoxelSurfaceBuilder {
   }
 
   void set_neighbours() {
-    const auto& index = *surface_.grid_->index;
     build_records(keys_.size(), surface_.neighbour_offsets_, surface_.neighbours_,
                   [&](std::uint32_t c, std::vector<std::uint32_t>& out) {
                     const VoxelCoord& v = surface_.coords_[c];
-                    const auto& tree = index.tree();
                     for (int dx = -1; dx <= 1; ++dx)
                       for (int dy = -1; dy <= 1; ++dy)
                         for (int dz = -1; dz <= 1; ++dz) {
                           if (dx == 0 && dy == 0 && dz == 0) continue;
-                          const std::int32_t n = tree.getValue(openvdb::Coord(v[0] + dx, v[1] + dy, v[2] + dz));
+                          const std::int64_t n = surface_.find({v[0] + dx, v[1] + dy, v[2] + dz});
                           if (n >= 0) out.push_back(static_cast<std::uint32_t>(n));
                         }
                     std::sort(out.begin(), out.end());
@@ -458,29 +455,37 @@ std::vector<std::uint32_t> VoxelSurface::components(std::size_t* component_count
 std::vector<double> VoxelSurface::intrinsic_distance(std::span<const std::uint32_t> sources, double max_distance,
                                                      const std::vector<char>* passable) const {
   std::vector<double> distance(cell_count(), std::numeric_limits<double>::infinity());
+  // Dial's bucket queue: bucket k holds the cells reached at a distance in [k eps, (k + 1) eps).
+  // Every step is at least eps long, so a cell taken from bucket k only lowers cells of later
+  // buckets, and the buckets are settled in order like a heap's front (a step that rounding
+  // leaves in the current bucket goes to its end). Entries whose distance has dropped since are
+  // skipped.
   using Entry = std::pair<double, std::uint32_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  std::vector<std::vector<Entry>> buckets(1);
+  auto bucket_of = [&](double d) { return static_cast<std::size_t>(d / eps_); };
   for (std::uint32_t s : sources) {
     distance[s] = 0.0;
-    queue.emplace(0.0, s);
+    buckets[0].emplace_back(0.0, s);
   }
   const double step[4] = {0.0, eps_, std::sqrt(2.0) * eps_, std::sqrt(3.0) * eps_};
-  while (!queue.empty()) {
-    const auto [d, c] = queue.top();
-    queue.pop();
-    if (d > distance[c]) continue;
-    const VoxelCoord& vc = coords_[c];
-    for (std::uint32_t n : neighbours(c)) {
-      if (passable && !(*passable)[n]) continue;
-      const VoxelCoord& vn = coords_[n];
-      const int axes_changed = (vn[0] != vc[0]) + (vn[1] != vc[1]) + (vn[2] != vc[2]);
-      const double candidate = d + step[axes_changed];
-      if (candidate < distance[n] && candidate <= max_distance) {
-        distance[n] = candidate;
-        queue.emplace(candidate, n);
+  for (std::size_t k = 0; k < buckets.size(); ++k)
+    for (std::size_t i = 0; i < buckets[k].size(); ++i) {
+      const auto [d, c] = buckets[k][i];
+      if (d > distance[c]) continue;
+      const VoxelCoord& vc = coords_[c];
+      for (std::uint32_t n : neighbours(c)) {
+        if (passable && !(*passable)[n]) continue;
+        const VoxelCoord& vn = coords_[n];
+        const int axes_changed = (vn[0] != vc[0]) + (vn[1] != vc[1]) + (vn[2] != vc[2]);
+        const double candidate = d + step[axes_changed];
+        if (candidate < distance[n] && candidate <= max_distance) {
+          distance[n] = candidate;
+          const std::size_t b = std::max(k, bucket_of(candidate));
+          if (b >= buckets.size()) buckets.resize(b + 1);
+          buckets[b].emplace_back(candidate, n);
+        }
       }
     }
-  }
   return distance;
 }
 
