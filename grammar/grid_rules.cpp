@@ -8,6 +8,9 @@
 #include "geometry/submesh.h"
 #include "symmetry/symmetric_region.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -476,9 +479,11 @@ struct RowOfParts {
 std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                        const GridOptions& options) {
   const ModelParts parts = model_parts(prepared.model.mesh);
-  std::optional<RowOfParts> best;
-  for (const SymmetryFamily& family : symmetries.families) {
-    if (family.kind != "translation" || family.count == 0) continue;  // count 0: it only slides walls and rails
+  // Families are independent: tried in parallel, compared in family order.
+  std::vector<std::optional<RowOfParts>> rows(symmetries.families.size());
+  tbb::parallel_for(std::size_t(0), rows.size(), [&](std::size_t f) {
+    const SymmetryFamily& family = symmetries.families[f];
+    if (family.kind != "translation" || family.count == 0) return;  // count 0: it only slides walls and rails
     const std::vector<std::size_t> by_power = members_by_power(family);
     for (std::size_t i = 0; i < std::min(by_power.size(), kRowMembersTried); ++i) {
       const std::size_t member = family.members[by_power[i]];
@@ -491,10 +496,13 @@ std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const Symm
       if (!direction) continue;
       const std::optional<int> fewest = place_whole_parts(*direction, prepared.model.mesh, parts, whole, prepared.surface.r());
       if (!fewest) continue;
-      if (!best || direction->count > best->direction.count) best = RowOfParts{std::move(*direction), *fewest};
-      break;
+      rows[f] = RowOfParts{std::move(*direction), *fewest};
+      return;
     }
-  }
+  });
+  std::optional<RowOfParts> best;
+  for (std::optional<RowOfParts>& row : rows)
+    if (row && (!best || row->direction.count > best->direction.count)) best = std::move(row);
   return best;
 }
 
@@ -519,21 +527,29 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   std::vector<GridRule> grids;
   std::vector<GridDirection> translations, screws;
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
-  for (std::size_t f = 0; f < symmetries.families.size(); ++f) {
-    report_progress(progress, "grid rules", static_cast<double>(f) / static_cast<double>(symmetries.families.size()));
+  // Families are independent: examined in parallel, in batches so that the calling thread
+  // reports progress in between, and joined in family order.
+  const std::size_t family_count = symmetries.families.size();
+  std::vector<std::optional<GridDirection>> found(family_count);
+  const auto batch = static_cast<std::size_t>(4 * std::max(1, tbb::this_task_arena::max_concurrency()));
+  for (std::size_t first = 0; first < family_count; first += batch) {
+    report_progress(progress, "grid rules", static_cast<double>(first) / static_cast<double>(family_count));
+    tbb::parallel_for(first, std::min(first + batch, family_count), [&](std::size_t f) {
+      const SymmetryFamily& family = symmetries.families[f];
+      if (family.kind != "translation" && family.kind != "screw") return;
+      for (std::size_t m : members_by_power(family)) {
+        found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
+                                  options.max_slab_asymmetry);
+        if (found[f]) return;
+      }
+    });
+  }
+  for (std::size_t f = 0; f < family_count; ++f) {
     const SymmetryFamily& family = symmetries.families[f];
-    if (family.kind != "translation" && family.kind != "screw") continue;
-    const std::vector<std::size_t> by_power = members_by_power(family);
-    std::optional<GridDirection> direction;
-    for (std::size_t m : by_power) {
-      direction = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m],
-                                 options.min_repeats, options.max_slab_asymmetry);
-      if (direction) break;
-    }
-    if (direction)
-      (family.kind == "translation" ? translations : screws).push_back(*direction);
+    if (found[f])
+      (family.kind == "translation" ? translations : screws).push_back(*found[f]);
     else if (family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)
-      repeated_generators.push_back(family.members[by_power.front()]);
+      repeated_generators.push_back(family.members[members_by_power(family).front()]);
   }
   // Most units first; then combine independent translations into one grid.
   // Ties keep a readable order: directions closest to x, then y, then z.
@@ -586,6 +602,7 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     screw_grid.directions.push_back(direction);
     grids.push_back(std::move(screw_grid));
   }
+  report_progress(progress, "grid rules", 1.0);
   return grids;
 }
 

@@ -85,8 +85,9 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// further 1-grid. Rotations (no slide) give none. When no translation gives a direction, the
 /// translation with the most units whose planes cut all but some separate parts kept whole
 /// (grammar/whole_parts.h) gives a 1-grid, if one of its units holds a whole part that no plane
-/// cuts (a row of parts, not only walls and rails sliding along themselves). `progress` hears
-/// stage "grid rules" with the fraction of repetition families examined.
+/// cuts (a row of parts, not only walls and rails sliding along themselves). Families are examined
+/// in parallel; the result does not depend on the thread count. `progress` hears stage "grid
+/// rules" with the fraction of repetition families examined (after each parallel batch), then 1.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options = {}, const ProgressCallback& progress = {});
 

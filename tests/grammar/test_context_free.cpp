@@ -517,7 +517,7 @@ TEST_CASE("grid rules, docking sites and context-free rules report their progres
     return fractions;
   };
   dg::find_grids(a.prepared, a.symmetries, {}, listen);
-  CHECK(fractions_of("grid rules").size() == a.symmetries.families.size());  // one per family
+  CHECK(fractions_of("grid rules").back() == 1.0);
   heard.clear();
   const dg::DockingSiteResult sites = dg::find_docking_sites(a.prepared, a.symmetries, {}, listen);
   CHECK(sites.sites.size() == a.sites.sites.size());  // listening changes nothing
