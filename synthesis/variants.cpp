@@ -46,15 +46,23 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
                           : " (productions of one shape count as one however they are triangulated)") +
                      "; --rules context-free rebuilds the exemplar");
   }
-  if (grammar.grids.size() > 1) throw InputError("variants of grammars with several grids are not supported yet");
   if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   Random random(plan.seed);
-  for (const GridWithPieces& grid : grammar.grids) {
+  // Each grid's pieces hold the whole model, the other grids as the exemplar has them, so a
+  // variant resizes one grid: with several, one drawn at random (a single grid draws nothing).
+  if (grammar.grids.size() > 1)
+    plan.grid = std::min(grammar.grids.size() - 1, static_cast<std::size_t>(random.uniform() * static_cast<double>(grammar.grids.size())));
+  for (std::size_t g = 0; g < grammar.grids.size(); ++g) {
+    const GridWithPieces& grid = grammar.grids[g];
+    std::vector<int> counts, exemplar_counts;
+    for (const GridDirection& d : grid.rule.directions) exemplar_counts.push_back(d.count);
+    if (g != plan.grid) {
+      plan.grid_counts.push_back(std::move(exemplar_counts));
+      continue;
+    }
     // Counts equal to the exemplar's in every direction rebuild the exemplar: drawn again (up to
     // 8 times, from the same stream) when the ranges allow other counts.
-    std::vector<int> counts, exemplar_counts;
     bool other_counts = false;
-    for (const GridDirection& d : grid.rule.directions) exemplar_counts.push_back(d.count);
     for (int draw = 0; draw <= 8 && (draw == 0 || (other_counts && counts == exemplar_counts)); ++draw) {
       counts.clear();
       for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
@@ -89,13 +97,14 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     variant.mesh = std::move(variant.derivation.mesh);
     return variant;
   }
-  const GridWithPieces& grid = grammar.grids.front();
+  const GridWithPieces& grid = grammar.grids[plan.grid];
+  const std::vector<int>& counts = plan.grid_counts[plan.grid];
   if (is_point_grammar(grammar))
-    variant.points = resize_grid_points(grid.rule, grid.pieces, plan.grid_counts.front());
+    variant.points = resize_grid_points(grid.rule, grid.pieces, counts);
   else
-    variant.mesh = resize_grid(grid.rule, grid.pieces, plan.grid_counts.front(), grammar.eps);
+    variant.mesh = resize_grid(grid.rule, grid.pieces, counts, grammar.eps);
   for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
-    variant.changed = variant.changed || plan.grid_counts.front()[i] != grid.rule.directions[i].count;
+    variant.changed = variant.changed || counts[i] != grid.rule.directions[i].count;
   return variant;
 }
 

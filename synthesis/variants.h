@@ -1,6 +1,6 @@
 #pragma once
 // Random variants of a grammar: a random derivation of its context-free rules, or new random
-// counts for its grid. Variant i depends only on (grammar, seed, i).
+// counts for one of its grids. Variant i depends only on (grammar, seed, i).
 
 #include "grammar/grammar_file.h"
 #include "synthesis/shape_derivation.h"
@@ -30,6 +30,9 @@ struct VariantPlan {
   std::uint64_t seed = 0;                      ///< the variant's own seed (derived from seed and index)
   bool context_free = false;                   ///< derived from the context-free rules
   std::vector<std::vector<int>> grid_counts;   ///< grid variants: per grid, per direction
+  /// Grid variants: the grid resized, drawn at random when there are several (the others keep
+  /// the exemplar's counts: each grid's pieces hold the rest of the model as it is).
+  std::size_t grid = 0;
 };
 
 /// A built variant.

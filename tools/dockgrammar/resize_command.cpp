@@ -1,4 +1,5 @@
-// `dockgrammar resize GRAMMAR --grid NAME=N[xM...] -o OUT`: a resized copy of the exemplar.
+// `dockgrammar resize GRAMMAR --grid NAME=N[xM...] -o OUT`: a resized copy of the exemplar (one
+// grid at a time; the others keep the exemplar's counts).
 
 #include "tools/dockgrammar/commands.h"
 
@@ -12,6 +13,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <map>
@@ -52,7 +54,7 @@ void add_resize_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
-  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction), repeatable")->required();
+  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction); one grid per run, the others keep the exemplar's counts")->required();
   command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb (.ply for a grammar made from a point cloud)")->required();
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
   command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
@@ -73,10 +75,18 @@ void add_resize_command(CLI::App& app) {
         throw InputError(fmt::format("{}: no grid named '{}' (grids: {})", options->grammar, name, names.empty() ? "none" : names));
       }
     }
-    if (grammar.grids.size() > 1)
-      throw InputError(options->grammar + ": resizing grammars with several grids is not supported yet");
-    const GridWithPieces& grid = grammar.grids.front();
-    const std::vector<int>& counts = requested.at(grid.rule.name);
+    // Each grid's pieces hold the whole model, the other grids as the exemplar has them: one grid
+    // is resized at a time.
+    if (requested.size() > 1) {
+      std::string names;
+      for (const auto& [name, counts] : requested) names += (names.empty() ? "" : ", ") + name;
+      throw InputError(fmt::format("{}: resize changes one grid at a time (got --grid for {}): resize one, analyze the "
+                                   "result, then resize the other",
+                                   options->grammar, names));
+    }
+    const auto& [name, counts] = *requested.begin();
+    const GridWithPieces& grid =
+        *std::find_if(grammar.grids.begin(), grammar.grids.end(), [&](const GridWithPieces& g) { return g.rule.name == name; });
     const std::filesystem::path output(options->output);
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (is_point_grammar(grammar)) {
