@@ -4,9 +4,6 @@
 #include "symmetry/slippage.h"
 #include "symmetry/symmetric_region.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -308,28 +305,23 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
     chosen.push_back(i);
   }
   // Each motion (symmetry and direction) is independent: computed in parallel, joined in order.
-  // Batches of a few motions per worker let the calling thread report progress in between.
   std::vector<DockingSiteResult> per_motion(2 * chosen.size());
-  const auto batch = static_cast<std::size_t>(4 * std::max(1, tbb::this_task_arena::max_concurrency()));
-  for (std::size_t first = 0; first < per_motion.size(); first += batch) {
-    report_progress(progress, "docking sites", static_cast<double>(first) / static_cast<double>(per_motion.size()));
-    tbb::parallel_for(first, std::min(first + batch, per_motion.size()), [&](std::size_t m) {
-      const std::size_t i = chosen[m / 2];
-      const bool inverse = m % 2 == 1;
-      const DetectedSymmetry& symmetry = symmetries.symmetries[i];
-      const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
-      std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t, point_cloud)
-                                            : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
-      const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
-      DockingSiteResult& local = per_motion[m];
-      local.stats.motions = 1;
-      sites_of_motion(context, options, local);
-      for (DockingSite& site : local.sites) {
-        site.symmetry = i;
-        site.inverse = inverse;
-      }
-    });
-  }
+  parallel_for_reporting(per_motion.size(), progress, "docking sites", [&](std::size_t m) {
+    const std::size_t i = chosen[m / 2];
+    const bool inverse = m % 2 == 1;
+    const DetectedSymmetry& symmetry = symmetries.symmetries[i];
+    const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
+    std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t, point_cloud)
+                                          : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
+    const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
+    DockingSiteResult& local = per_motion[m];
+    local.stats.motions = 1;
+    sites_of_motion(context, options, local);
+    for (DockingSite& site : local.sites) {
+      site.symmetry = i;
+      site.inverse = inverse;
+    }
+  });
   report_progress(progress, "docking sites", 1.0);
   for (DockingSiteResult& local : per_motion) {
     result.stats.motions += local.stats.motions;

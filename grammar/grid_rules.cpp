@@ -9,7 +9,6 @@
 #include "symmetry/symmetric_region.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -527,23 +526,18 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   std::vector<GridRule> grids;
   std::vector<GridDirection> translations, screws;
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
-  // Families are independent: examined in parallel, in batches so that the calling thread
-  // reports progress in between, and joined in family order.
+  // Families are independent: examined in parallel and joined in family order.
   const std::size_t family_count = symmetries.families.size();
   std::vector<std::optional<GridDirection>> found(family_count);
-  const auto batch = static_cast<std::size_t>(4 * std::max(1, tbb::this_task_arena::max_concurrency()));
-  for (std::size_t first = 0; first < family_count; first += batch) {
-    report_progress(progress, "grid rules", static_cast<double>(first) / static_cast<double>(family_count));
-    tbb::parallel_for(first, std::min(first + batch, family_count), [&](std::size_t f) {
-      const SymmetryFamily& family = symmetries.families[f];
-      if (family.kind != "translation" && family.kind != "screw") return;
-      for (std::size_t m : members_by_power(family)) {
-        found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
-                                  options.max_slab_asymmetry);
-        if (found[f]) return;
-      }
-    });
-  }
+  parallel_for_reporting(family_count, progress, "grid rules", [&](std::size_t f) {
+    const SymmetryFamily& family = symmetries.families[f];
+    if (family.kind != "translation" && family.kind != "screw") return;
+    for (std::size_t m : members_by_power(family)) {
+      found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
+                                options.max_slab_asymmetry);
+      if (found[f]) return;
+    }
+  });
   for (std::size_t f = 0; f < family_count; ++f) {
     const SymmetryFamily& family = symmetries.families[f];
     if (found[f])
