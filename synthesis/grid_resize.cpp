@@ -12,27 +12,6 @@
 namespace dg {
 namespace {
 
-// Placements of the copies of `piece`: per direction, the identity for a head piece, the k-th
-// power of the generator (k = 0 .. count - head and tail units - 1) for a unit piece, the power
-// count - exemplar count for a tail piece; the copies are all combinations (the generators of a
-// grid commute).
-std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
-  std::vector<RigidTransform> placements{RigidTransform{}};
-  for (std::size_t i = 0; i < grid.directions.size(); ++i) {
-    const GridDirection& d = grid.directions[i];
-    std::vector<RigidTransform> along;
-    if (piece.classes[i] == 0) along.push_back(RigidTransform{});
-    if (piece.classes[i] == 1)
-      for (int k = 0; k < counts[i] - min_units(d); ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
-    if (piece.classes[i] == 2) along.push_back(power(d.motion, counts[i] - d.count));
-    std::vector<RigidTransform> combined;
-    for (const RigidTransform& a : placements)
-      for (const RigidTransform& b : along) combined.push_back(b.after(a));
-    placements = std::move(combined);
-  }
-  return placements;
-}
-
 // Throws InputError unless `counts` has one count per direction of `grid`, each in its range.
 void check_counts(const GridRule& grid, const std::vector<int>& counts) {
   if (counts.size() != grid.directions.size())
@@ -52,6 +31,23 @@ void check_counts(const GridRule& grid, const std::vector<int>& counts) {
 }
 
 }  // namespace
+
+std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
+  std::vector<RigidTransform> placements{RigidTransform{}};
+  for (std::size_t i = 0; i < grid.directions.size(); ++i) {
+    const GridDirection& d = grid.directions[i];
+    std::vector<RigidTransform> along;
+    if (piece.classes[i] == 0) along.push_back(RigidTransform{});
+    if (piece.classes[i] == 1)
+      for (int k = 0; k < counts[i] - min_units(d); ++k) along.push_back(k == 0 ? RigidTransform{} : d.motion.after(along.back()));
+    if (piece.classes[i] == 2) along.push_back(power(d.motion, counts[i] - d.count));
+    std::vector<RigidTransform> combined;
+    for (const RigidTransform& a : placements)
+      for (const RigidTransform& b : along) combined.push_back(b.after(a));
+    placements = std::move(combined);
+  }
+  return placements;
+}
 
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
                          double eps) {

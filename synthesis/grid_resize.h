@@ -9,6 +9,12 @@
 
 namespace dg {
 
+/// Where a resize of `grid` to `counts` (one per direction) places the copies of `piece`: per
+/// direction, the identity for a head piece, the k-th power of the generator (k = 0 .. count -
+/// head and tail units - 1) for a unit piece, the power count - exemplar count for a tail piece;
+/// the copies are all combinations (the generators of a grid commute).
+std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts);
+
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
 /// range), welds seam vertices of different copies closer than grid_weld_tolerance
 /// (grammar/grid_seams.h: twice the grid's seam misfit, at least 1e-4 of the voxel size `eps`;

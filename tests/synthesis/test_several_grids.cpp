@@ -1,12 +1,16 @@
 // A model with two grids: spiral stairs (a screw 1-grid) and, above and beside them, a fence (a
-// translation 1-grid). Each grid's pieces hold the whole model, so resize and generate change one
-// grid at a time and leave the other part as the exemplar has it.
+// translation 1-grid). Each grid's pieces hold the whole model: resizing one grid leaves the other
+// part as the exemplar has it, and resizing both cuts the second grid again from the first result.
 
 #include "synthesis/grid_resize.h"
+#include "synthesis/several_grids.h"
 #include "synthesis/variants.h"
 
 #include "assets/generator/asset.h"
+#include "geometry/errors.h"
+#include "geometry/model_io.h"
 #include "geometry/submesh.h"
+#include "geometry/topology.h"
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
@@ -15,6 +19,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -52,11 +57,16 @@ TwoGrids two_grids() {
   dg::test::append(model.mesh, fence(4));
   TwoGrids g{dg::test::model_grammar(std::move(model), false)};
   REQUIRE(g.grammar.grids.size() == 2);
+  // The stairs turn (a screw); the fence only slides along x.
+  int screws = 0;
   for (std::size_t i = 0; i < 2; ++i) {
     const dg::GridDirection& d = g.grammar.grids[i].rule.directions.front();
-    (std::abs(d.direction.x()) > 0.99 ? g.fence_grid : g.stairs_grid) = i;
+    const bool screw = d.motion.angle() > 0.1;
+    screws += screw ? 1 : 0;
+    if (!screw) REQUIRE(std::abs(d.direction.x()) > 0.99);
+    (screw ? g.stairs_grid : g.fence_grid) = i;
   }
-  REQUIRE(g.fence_grid != g.stairs_grid);
+  REQUIRE(screws == 1);
   REQUIRE(g.grammar.grids[g.fence_grid].rule.directions.front().count == 4);
   return g;
 }
@@ -94,23 +104,85 @@ TEST_CASE("two grids: each variant resizes one grid, drawn at random, and the ot
   CHECK(dg::test::hausdorff_distance(part(variant.mesh, false), stairs()) < 1e-3 * g.grammar.eps);
 }
 
-TEST_CASE("resize CLI: one grid per run of a grammar with two", "[synthesis][grid][cli]") {
+// The generator's stairs with `extra` steps more than the exemplar's 12 and fence(units) where
+// that puts it: the fence lies in the stairs' tail piece, so it turns and rises with the last
+// step (12 steps per turn, rise 0.18).
+dg::TriangleMesh stairs_with_fence(int extra, int units) {
+  dg::TriangleMesh expected = dg::assets::make_asset("spiral_stairs", {{"steps", 12 + extra}}).mesh;
+  const dg::RigidTransform screw{dg::Mat3(Eigen::AngleAxisd(extra * std::numbers::pi / 6.0, dg::Vec3::UnitZ())),
+                                 dg::Vec3(0.0, 0.0, 0.18 * extra)};
+  dg::test::append(expected, dg::transformed(fence(units), screw));
+  return expected;
+}
+
+int stairs_count(const TwoGrids& g) { return g.grammar.grids[g.stairs_grid].rule.directions.front().count; }
+
+TEST_CASE("two grids resized in one run: the stairs grow and the fence on their tail grows with them", "[synthesis][grid]") {
+  const TwoGrids g = two_grids();
+  const int steps = stairs_count(g);  // the top steps lie in the tail piece with the fence
+  for (const std::vector<dg::GridResize>& resizes :
+       {std::vector<dg::GridResize>{{g.fence_grid, {6}}, {g.stairs_grid, {steps + 2}}},
+        std::vector<dg::GridResize>{{g.stairs_grid, {steps + 2}}, {g.fence_grid, {6}}}}) {
+    const dg::TriangleMesh resized = dg::resize_grids(g.grammar, resizes);
+    const dg::TriangleMesh expected = stairs_with_fence(2, 6);
+    CHECK(dg::is_closed_and_oriented(resized));
+    CHECK(dg::test::hausdorff_distance(resized, expected) < g.grammar.eps);
+    CHECK(resized.area() == Approx(expected.area()).epsilon(1e-3));
+  }
+  // Fewer steps and a shorter fence.
+  const dg::TriangleMesh smaller = dg::resize_grids(g.grammar, {{g.stairs_grid, {steps - 3}}, {g.fence_grid, {3}}});
+  CHECK(dg::is_closed_and_oriented(smaller));
+  CHECK(dg::test::hausdorff_distance(smaller, stairs_with_fence(-3, 3)) < g.grammar.eps);
+  // One grid: the same mesh as resize_grid; the exemplar's counts for the other change nothing.
+  const dg::GridWithPieces& fence_grid = g.grammar.grids[g.fence_grid];
+  const dg::TriangleMesh alone = dg::resize_grid(fence_grid.rule, fence_grid.pieces, {6}, g.grammar.eps);
+  for (const dg::TriangleMesh& same : {dg::resize_grids(g.grammar, {{g.fence_grid, {6}}}),
+                                       dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.stairs_grid, {steps}}})}) {
+    CHECK(same.positions == alone.positions);
+    CHECK(same.triangles == alone.triangles);
+  }
+  CHECK_THROWS_AS(dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.fence_grid, {5}}}), dg::InputError);
+  CHECK_THROWS_AS(dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.stairs_grid, {-1}}}), dg::InputError);
+}
+
+TEST_CASE("two grids that overlap are not resized together", "[synthesis][grid]") {
+  // The fence's pieces moved down among the stairs' steps: what a resize of the fence adds or
+  // moves then lies in the stairs' repeated units, which their resize would copy or drop.
+  TwoGrids g = two_grids();
+  const dg::RigidTransform down{dg::Mat3::Identity(), dg::Vec3(0.0, 0.0, -3.0)};
+  for (dg::GridPiece& piece : g.grammar.grids[g.fence_grid].pieces) piece.mesh = dg::transformed(piece.mesh, down);
+  try {
+    (void)dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.stairs_grid, {stairs_count(g) + 2}}});
+    FAIL("resize_grids accepted overlapping grids");
+  } catch (const dg::InputError& e) {
+    const std::string message = e.what();
+    CHECK_THAT(message, Catch::Contains("overlap") && Catch::Contains(g.grammar.grids[0].rule.name) &&
+                            Catch::Contains(g.grammar.grids[1].rule.name));
+    CHECK_THAT(message, Catch::Contains("resize one, analyze the result, then resize the other"));
+  }
+  // Resizing the fence alone stays possible.
+  CHECK_NOTHROW(dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.stairs_grid, {stairs_count(g)}}}));
+}
+
+TEST_CASE("resize CLI: several grids in one run", "[synthesis][grid][cli]") {
   const TwoGrids g = two_grids();
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-two-grids");
   dg::write_grammar(folder / "two.grammar.json", g.grammar);
+  const std::string grammar = (folder / "two.grammar.json").string();
   const std::string fence_name = g.grammar.grids[g.fence_grid].rule.name;
   const std::string stairs_name = g.grammar.grids[g.stairs_grid].rule.name;
   const dg::test::CliRun both = dg::test::run_cli(
-      "resize " + (folder / "two.grammar.json").string() + " --grid " + fence_name + "=6 --grid " + stairs_name + "=12 -o " +
-          (folder / "both.obj").string(),
+      "resize " + grammar + " --grid " + fence_name + "=6 --grid " + stairs_name + "=" + std::to_string(stairs_count(g) + 2) +
+          " -q -o " + (folder / "both.ply").string(),
       folder);
-  CHECK(both.status == 2);
-  CHECK_THAT(both.output, Catch::Contains("one grid at a time"));
-  CHECK_FALSE(std::filesystem::exists(folder / "both.obj"));
-  const dg::test::CliRun one =
-      dg::test::run_cli("resize " + (folder / "two.grammar.json").string() + " --grid " + fence_name + "=6 -q -o " +
-                            (folder / "one.obj").string(),
-                        folder);
-  CHECK(one.status == 0);
-  CHECK(std::filesystem::exists(folder / "one.obj"));
+  CHECK(both.status == 0);
+  REQUIRE(std::filesystem::exists(folder / "both.ply"));
+  const dg::TriangleMesh written = dg::read_model(folder / "both.ply").mesh;
+  CHECK(dg::test::hausdorff_distance(written, stairs_with_fence(2, 6)) < g.grammar.eps);
+  const dg::test::CliRun twice = dg::test::run_cli(
+      "resize " + grammar + " --grid " + fence_name + "=6 --grid " + fence_name + "=5 -o " + (folder / "twice.obj").string(),
+      folder);
+  CHECK(twice.status == 2);
+  CHECK_THAT(twice.output, Catch::Contains("given twice"));
+  CHECK_FALSE(std::filesystem::exists(folder / "twice.obj"));
 }

@@ -1,5 +1,5 @@
-// `dockgrammar resize GRAMMAR --grid NAME=N[xM...] -o OUT`: a resized copy of the exemplar (one
-// grid at a time; the others keep the exemplar's counts).
+// `dockgrammar resize GRAMMAR --grid NAME=N[xM...] [--grid ...] -o OUT`: a resized copy of the
+// exemplar (grids not named keep the exemplar's counts).
 
 #include "tools/dockgrammar/commands.h"
 
@@ -7,7 +7,7 @@
 #include "geometry/model_io.h"
 #include "geometry/point_splats.h"
 #include "grammar/grammar_file.h"
-#include "synthesis/grid_resize.h"
+#include "synthesis/several_grids.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
-#include <map>
 #include <memory>
 
 namespace dg::cli {
@@ -54,43 +53,29 @@ void add_resize_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
-  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction); one grid per run, the others keep the exemplar's counts")->required();
+  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction); repeat for several grids; grids not named keep the exemplar's counts")->required();
   command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb (.ply for a grammar made from a point cloud)")->required();
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
   command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
-    std::map<std::string, std::vector<int>> requested;
+    std::vector<GridResize> resizes;
     for (const std::string& text : options->grids) {
       auto [name, counts] = parse_grid_counts(text);
-      requested[name] = counts;
-    }
-    for (const auto& [name, counts] : requested) {
-      bool known = false;
-      for (const GridWithPieces& grid : grammar.grids) known = known || grid.rule.name == name;
-      if (!known) {
+      const auto grid =
+          std::find_if(grammar.grids.begin(), grammar.grids.end(), [&](const GridWithPieces& g) { return g.rule.name == name; });
+      if (grid == grammar.grids.end()) {
         std::string names;
-        for (const GridWithPieces& grid : grammar.grids) names += (names.empty() ? "" : ", ") + grid.rule.name;
+        for (const GridWithPieces& g : grammar.grids) names += (names.empty() ? "" : ", ") + g.rule.name;
         throw InputError(fmt::format("{}: no grid named '{}' (grids: {})", options->grammar, name, names.empty() ? "none" : names));
       }
+      resizes.push_back({static_cast<std::size_t>(grid - grammar.grids.begin()), std::move(counts)});
     }
-    // Each grid's pieces hold the whole model, the other grids as the exemplar has them: one grid
-    // is resized at a time.
-    if (requested.size() > 1) {
-      std::string names;
-      for (const auto& [name, counts] : requested) names += (names.empty() ? "" : ", ") + name;
-      throw InputError(fmt::format("{}: resize changes one grid at a time (got --grid for {}): resize one, analyze the "
-                                   "result, then resize the other",
-                                   options->grammar, names));
-    }
-    const auto& [name, counts] = *requested.begin();
-    const GridWithPieces& grid =
-        *std::find_if(grammar.grids.begin(), grammar.grids.end(), [&](const GridWithPieces& g) { return g.rule.name == name; });
     const std::filesystem::path output(options->output);
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (is_point_grammar(grammar)) {
-      const PointCloud result = resize_grid_points(grid.rule, grid.pieces, counts);
+      const PointCloud result = resize_grids_points(grammar, resizes);
       create_output_folder(output.parent_path());
       write_point_cloud(output, result);  // rejects outputs other than .ply
       if (options->picture)
@@ -99,7 +84,7 @@ void add_resize_command(CLI::App& app) {
       if (!options->quiet) fmt::print(stderr, "wrote {} ({} points)\n", options->output, result.positions.size());
       return;
     }
-    const TriangleMesh result = resize_grid(grid.rule, grid.pieces, counts, grammar.eps);
+    const TriangleMesh result = resize_grids(grammar, resizes);
     create_output_folder(output.parent_path());
     write_mesh_with_materials(output, result, grammar.materials);
     if (options->picture)

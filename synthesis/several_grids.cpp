@@ -1,0 +1,130 @@
+#include "synthesis/several_grids.h"
+
+#include "geometry/errors.h"
+#include "synthesis/grid_resize.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <utility>
+
+namespace dg {
+namespace {
+
+bool keeps_parts_whole(const GridRule& grid) {
+  return std::any_of(grid.directions.begin(), grid.directions.end(),
+                     [](const GridDirection& d) { return !d.whole_in_head.empty() || !d.whole_in_tail.empty(); });
+}
+
+bool changes_counts(const GridRule& grid, const std::vector<int>& counts) {
+  for (std::size_t i = 0; i < grid.directions.size() && i < counts.size(); ++i)
+    if (counts[i] != grid.directions[i].count) return true;
+  return counts.size() != grid.directions.size();  // resize_grid reports the mismatch
+}
+
+// The resizes in the order they are applied: the one grid that keeps separate parts whole first
+// (its parts are named by the exemplar's triangles, so only the exemplar's pieces hold them),
+// then grammar order; grids keeping their exemplar's counts are left out unless all do.
+std::vector<GridResize> resize_order(const ShapeGrammar& grammar, std::vector<GridResize> resizes) {
+  for (std::size_t a = 0; a < resizes.size(); ++a) {
+    if (resizes[a].grid >= grammar.grids.size()) throw InputError(fmt::format("no grid {}", resizes[a].grid + 1));
+    for (std::size_t b = 0; b < a; ++b)
+      if (resizes[a].grid == resizes[b].grid)
+        throw InputError(fmt::format("grid {} is given twice", grammar.grids[resizes[a].grid].rule.name));
+  }
+  if (resizes.empty()) throw InputError("no grid to resize");
+  std::vector<GridResize> changing;
+  for (const GridResize& r : resizes)
+    if (changes_counts(grammar.grids[r.grid].rule, r.counts)) changing.push_back(r);
+  if (changing.empty()) changing.push_back(resizes.front());
+  std::stable_sort(changing.begin(), changing.end(), [&](const GridResize& a, const GridResize& b) {
+    const bool whole_a = keeps_parts_whole(grammar.grids[a.grid].rule), whole_b = keeps_parts_whole(grammar.grids[b.grid].rule);
+    return whole_a != whole_b ? whole_a : a.grid < b.grid;
+  });
+  if (changing.size() > 1 && keeps_parts_whole(grammar.grids[changing[1].grid].rule))
+    throw InputError(fmt::format("grids {} and {} both keep separate parts whole: resize one, analyze the result, then "
+                                 "resize the other",
+                                 grammar.grids[changing[0].grid].rule.name, grammar.grids[changing[1].grid].rule.name));
+  return changing;
+}
+
+// Positions a resize of `grid` to `counts` moves or adds: the vertices (points) of its pieces
+// that are not head pieces in every direction, where the exemplar's counts and `counts` put them.
+std::vector<Vec3> changed_positions(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
+  std::vector<int> exemplar_counts;
+  for (const GridDirection& d : grid.directions) exemplar_counts.push_back(d.count);
+  std::vector<Vec3> positions;
+  for (const GridPiece& piece : pieces) {
+    if (std::all_of(piece.classes.begin(), piece.classes.end(), [](int c) { return c == 0; })) continue;
+    for (const std::vector<int>* c : {&std::as_const(exemplar_counts), &counts})
+      for (const RigidTransform& placement : piece_placements(grid, piece, *c)) {
+        for (const Vec3& p : piece.mesh.positions) positions.push_back(placement.apply(p));
+        for (const Vec3& p : piece.points.positions) positions.push_back(placement.apply(p));
+      }
+  }
+  return positions;
+}
+
+// The piece classes of `grid` (0 head, 1 unit, 2 tail, -1 a copy of the unit, per direction)
+// that all of `positions` share, or nothing when they do not share one.
+std::optional<std::vector<int>> shared_classes(const GridRule& grid, const std::vector<Vec3>& positions) {
+  std::optional<std::vector<int>> shared;
+  for (const Vec3& p : positions) {
+    std::vector<int> classes;
+    for (const GridDirection& d : grid.directions) classes.push_back(slab_class(slab_of_point(d, p), d));
+    if (!shared) shared = classes;
+    if (*shared != classes) return std::nullopt;
+  }
+  return shared;
+}
+
+// Applies the resizes in order: `resize` builds a result from a grid's pieces, `recut` cuts a
+// result into a grid's pieces.
+template <typename Geometry>
+Geometry resize_in_order(const ShapeGrammar& grammar, const std::vector<GridResize>& order,
+                         const std::function<Geometry(const GridRule&, const std::vector<GridPiece>&, const std::vector<int>&)>& resize,
+                         const std::function<std::vector<GridPiece>(const Geometry&, const GridRule&)>& recut) {
+  Geometry result;
+  std::vector<Vec3> changed;  // positions the resizes so far moved or added, where they lie in `result`
+  std::string changed_by;     // the grids that changed them
+  for (std::size_t step = 0; step < order.size(); ++step) {
+    const GridWithPieces& grid = grammar.grids[order[step].grid];
+    std::vector<GridPiece> recut_pieces;
+    if (step > 0 && !changed.empty()) {
+      const std::optional<std::vector<int>> classes = shared_classes(grid.rule, changed);
+      const bool stored = classes && std::all_of(classes->begin(), classes->end(), [](int c) { return c == 0 || c == 2; });
+      if (!stored)
+        throw InputError(fmt::format("grids {} and {} overlap: resizing {} changes the model inside more than one piece, "
+                                     "or inside the repeated units, of {}; resize one, analyze the result, then resize "
+                                     "the other",
+                                     changed_by, grid.rule.name, changed_by, grid.rule.name));
+      if (std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; })) changed.clear();  // moved with a tail
+    }
+    if (step > 0) recut_pieces = recut(result, grid.rule);
+    const std::vector<GridPiece>& pieces = step == 0 ? grid.pieces : recut_pieces;
+    result = resize(grid.rule, pieces, order[step].counts);
+    const std::vector<Vec3> moved = changed_positions(grid.rule, pieces, order[step].counts);
+    changed.insert(changed.end(), moved.begin(), moved.end());
+    changed_by += (changed_by.empty() ? "" : " and ") + grid.rule.name;
+  }
+  return result;
+}
+
+}  // namespace
+
+TriangleMesh resize_grids(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes) {
+  return resize_in_order<TriangleMesh>(
+      grammar, resize_order(grammar, resizes),
+      [&](const GridRule& rule, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
+        return resize_grid(rule, pieces, counts, grammar.eps);
+      },
+      [&](const TriangleMesh& mesh, const GridRule& rule) { return cut_grid_pieces(mesh, rule, grammar.eps); });
+}
+
+PointCloud resize_grids_points(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes) {
+  return resize_in_order<PointCloud>(grammar, resize_order(grammar, resizes), resize_grid_points, cut_grid_points);
+}
+
+}  // namespace dg
