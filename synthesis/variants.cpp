@@ -3,7 +3,7 @@
 #include "geometry/errors.h"
 #include "geometry/same_surface.h"
 #include "geometry/random.h"
-#include "synthesis/grid_resize.h"
+#include "synthesis/several_grids.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,18 +48,13 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   }
   if (!(options.range_factor >= 1.0)) throw InputError("the count range factor must be at least 1");
   Random random(plan.seed);
-  // Each grid's pieces hold the whole model, the other grids as the exemplar has them, so a
-  // variant resizes one grid: with several, one drawn at random (a single grid draws nothing).
+  // With several grids, the one resized alone when they cannot be resized together (a single
+  // grid draws nothing).
   if (grammar.grids.size() > 1)
     plan.grid = std::min(grammar.grids.size() - 1, static_cast<std::size_t>(random.uniform() * static_cast<double>(grammar.grids.size())));
-  for (std::size_t g = 0; g < grammar.grids.size(); ++g) {
-    const GridWithPieces& grid = grammar.grids[g];
+  for (const GridWithPieces& grid : grammar.grids) {
     std::vector<int> counts, exemplar_counts;
     for (const GridDirection& d : grid.rule.directions) exemplar_counts.push_back(d.count);
-    if (g != plan.grid) {
-      plan.grid_counts.push_back(std::move(exemplar_counts));
-      continue;
-    }
     // Counts equal to the exemplar's in every direction rebuild the exemplar: drawn again (up to
     // 8 times, from the same stream) when the ranges allow other counts.
     bool other_counts = false;
@@ -97,14 +92,31 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     variant.mesh = std::move(variant.derivation.mesh);
     return variant;
   }
-  const GridWithPieces& grid = grammar.grids[plan.grid];
-  const std::vector<int>& counts = plan.grid_counts[plan.grid];
-  if (is_point_grammar(grammar))
-    variant.points = resize_grid_points(grid.rule, grid.pieces, counts);
-  else
-    variant.mesh = resize_grid(grid.rule, grid.pieces, counts, grammar.eps);
-  for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)
-    variant.changed = variant.changed || counts[i] != grid.rule.directions[i].count;
+  std::vector<GridResize> resizes;
+  for (std::size_t g = 0; g < grammar.grids.size(); ++g) resizes.push_back({g, plan.grid_counts[g]});
+  auto build = [&] {
+    if (is_point_grammar(grammar))
+      variant.points = resize_grids_points(grammar, resizes);
+    else
+      variant.mesh = resize_grids(grammar, resizes);
+  };
+  try {
+    build();
+  } catch (const InputError& e) {
+    if (resizes.size() < 2) throw;
+    // The grids overlap: only the drawn one is resized, the others keep the exemplar's counts.
+    variant.one_grid_only = e.what();
+    resizes = {resizes[plan.grid]};
+    build();
+  }
+  for (const GridWithPieces& grid : grammar.grids) {
+    variant.grid_counts.emplace_back();
+    for (const GridDirection& d : grid.rule.directions) variant.grid_counts.back().push_back(d.count);
+  }
+  for (const GridResize& r : resizes) {
+    variant.changed = variant.changed || variant.grid_counts[r.grid] != r.counts;
+    variant.grid_counts[r.grid] = r.counts;
+  }
   return variant;
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // Random variants of a grammar: a random derivation of its context-free rules, or new random
-// counts for one of its grids. Variant i depends only on (grammar, seed, i).
+// counts for its grids. Variant i depends only on (grammar, seed, i).
 
 #include "grammar/grammar_file.h"
 #include "synthesis/shape_derivation.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace dg {
@@ -30,8 +31,8 @@ struct VariantPlan {
   std::uint64_t seed = 0;                      ///< the variant's own seed (derived from seed and index)
   bool context_free = false;                   ///< derived from the context-free rules
   std::vector<std::vector<int>> grid_counts;   ///< grid variants: per grid, per direction
-  /// Grid variants: the grid resized, drawn at random when there are several (the others keep
-  /// the exemplar's counts: each grid's pieces hold the rest of the model as it is).
+  /// Grid variants with several grids: the one grid resized when they cannot be resized together
+  /// (see resize_grids), drawn at random; the others then keep the exemplar's counts.
   std::size_t grid = 0;
 };
 
@@ -43,6 +44,11 @@ struct Variant {
   /// It differs from the exemplar: other grid counts, or a derivation whose surface is not the
   /// exemplar's (see build_variant).
   bool changed = false;
+  /// Grid variants: the counts built, per grid (the plan's, or, when its grids cannot be resized
+  /// together, the plan's for its drawn grid and the exemplar's for the others).
+  std::vector<std::vector<int>> grid_counts;
+  /// Why the grids were not resized together (resize_grids' error); empty when they were.
+  std::string one_grid_only;
 };
 
 /// Seed of variant `index` of a batch started with `seed` (SplitMix64 of both).
@@ -51,7 +57,9 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 /// Plans variant `index`. Throws InputError when the grammar has no rules of the requested kind.
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 
-/// Builds the mesh (or, for a point-cloud grammar, the points) of a planned variant. A
+/// Builds the mesh (or, for a point-cloud grammar, the points) of a planned variant: all grids
+/// at the plan's counts (resize_grids), or only the plan's drawn grid when they cannot be resized
+/// together. A
 /// context-free derivation that happens to keep every slot's exemplar production, or whose other
 /// productions give the exemplar's surface again (within eps, see same_surface: another
 /// decomposition of the same parts), is drawn again (up to 8 times, with seeds derived from the

@@ -1,6 +1,7 @@
 // A model with two grids: spiral stairs (a screw 1-grid) and, above and beside them, a fence (a
 // translation 1-grid). Each grid's pieces hold the whole model: resizing one grid leaves the other
-// part as the exemplar has it, and resizing both cuts the second grid again from the first result.
+// part as the exemplar has it, and resizing both (resize, generate) cuts the second grid again
+// from the first result.
 
 #include "synthesis/grid_resize.h"
 #include "synthesis/several_grids.h"
@@ -71,39 +72,6 @@ TwoGrids two_grids() {
   return g;
 }
 
-}  // namespace
-
-TEST_CASE("two grids: resizing one leaves the other part as it was", "[synthesis][grid]") {
-  const TwoGrids g = two_grids();
-  const dg::GridWithPieces& grid = g.grammar.grids[g.fence_grid];
-  const dg::TriangleMesh resized = dg::resize_grid(grid.rule, grid.pieces, {6}, g.grammar.eps);
-  CHECK(dg::test::hausdorff_distance(part(resized, true), fence(6)) < 1e-3 * g.grammar.eps);
-  CHECK(dg::test::hausdorff_distance(part(resized, false), stairs()) < 1e-3 * g.grammar.eps);
-}
-
-TEST_CASE("two grids: each variant resizes one grid, drawn at random, and the other keeps its counts", "[synthesis][variants]") {
-  const TwoGrids g = two_grids();
-  std::vector<std::vector<int>> exemplar_counts;
-  for (const dg::GridWithPieces& grid : g.grammar.grids) exemplar_counts.push_back({grid.rule.directions.front().count});
-  std::set<std::size_t> resized_grids;
-  std::optional<dg::VariantPlan> fence_plan;
-  for (std::uint64_t i = 0; i < 16; ++i) {
-    const dg::VariantPlan plan = dg::plan_variant(g.grammar, 7, i);
-    REQUIRE(plan.grid_counts.size() == 2);
-    resized_grids.insert(plan.grid);
-    CHECK(plan.grid_counts[plan.grid] != exemplar_counts[plan.grid]);
-    CHECK(plan.grid_counts[1 - plan.grid] == exemplar_counts[1 - plan.grid]);
-    if (plan.grid == g.fence_grid && !fence_plan) fence_plan = plan;
-  }
-  CHECK(resized_grids.size() == 2);
-  REQUIRE(fence_plan);
-  const dg::Variant variant = dg::build_variant(g.grammar, *fence_plan);
-  CHECK(variant.changed);
-  CHECK(dg::test::hausdorff_distance(part(variant.mesh, true), fence(fence_plan->grid_counts[g.fence_grid].front())) <
-        1e-3 * g.grammar.eps);
-  CHECK(dg::test::hausdorff_distance(part(variant.mesh, false), stairs()) < 1e-3 * g.grammar.eps);
-}
-
 // The generator's stairs with `extra` steps more than the exemplar's 12 and fence(units) where
 // that puts it: the fence lies in the stairs' tail piece, so it turns and rises with the last
 // step (12 steps per turn, rise 0.18).
@@ -116,6 +84,35 @@ dg::TriangleMesh stairs_with_fence(int extra, int units) {
 }
 
 int stairs_count(const TwoGrids& g) { return g.grammar.grids[g.stairs_grid].rule.directions.front().count; }
+
+}  // namespace
+
+TEST_CASE("two grids: resizing one leaves the other part as it was", "[synthesis][grid]") {
+  const TwoGrids g = two_grids();
+  const dg::GridWithPieces& grid = g.grammar.grids[g.fence_grid];
+  const dg::TriangleMesh resized = dg::resize_grid(grid.rule, grid.pieces, {6}, g.grammar.eps);
+  CHECK(dg::test::hausdorff_distance(part(resized, true), fence(6)) < 1e-3 * g.grammar.eps);
+  CHECK(dg::test::hausdorff_distance(part(resized, false), stairs()) < 1e-3 * g.grammar.eps);
+}
+
+TEST_CASE("two grids: each variant resizes both", "[synthesis][variants]") {
+  const TwoGrids g = two_grids();
+  std::set<int> fence_counts, stairs_counts;
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    const dg::VariantPlan plan = dg::plan_variant(g.grammar, 7, i);
+    REQUIRE(plan.grid_counts.size() == 2);
+    const dg::Variant variant = dg::build_variant(g.grammar, plan);
+    CHECK(variant.changed);
+    CHECK(variant.one_grid_only.empty());
+    CHECK(variant.grid_counts == plan.grid_counts);
+    const int fence_units = plan.grid_counts[g.fence_grid].front(), steps = plan.grid_counts[g.stairs_grid].front();
+    fence_counts.insert(fence_units);
+    stairs_counts.insert(steps);
+    CHECK(dg::test::hausdorff_distance(variant.mesh, stairs_with_fence(steps - stairs_count(g), fence_units)) < g.grammar.eps);
+  }
+  CHECK(fence_counts.size() > 1);
+  CHECK(stairs_counts.size() > 1);
+}
 
 TEST_CASE("two grids resized in one run: the stairs grow and the fence on their tail grows with them", "[synthesis][grid]") {
   const TwoGrids g = two_grids();
@@ -162,6 +159,19 @@ TEST_CASE("two grids that overlap are not resized together", "[synthesis][grid]"
   }
   // Resizing the fence alone stays possible.
   CHECK_NOTHROW(dg::resize_grids(g.grammar, {{g.fence_grid, {6}}, {g.stairs_grid, {stairs_count(g)}}}));
+  // A variant then resizes its drawn grid only and says why; the other keeps the exemplar's counts.
+  std::set<std::size_t> resized;
+  for (std::uint64_t i = 0; i < 8; ++i) {
+    const dg::VariantPlan plan = dg::plan_variant(g.grammar, 3, i);
+    const dg::Variant variant = dg::build_variant(g.grammar, plan);
+    CHECK_THAT(variant.one_grid_only, Catch::Contains("overlap"));
+    const std::size_t other = 1 - plan.grid;
+    CHECK(variant.grid_counts[plan.grid] == plan.grid_counts[plan.grid]);
+    CHECK(variant.grid_counts[other] == std::vector<int>{g.grammar.grids[other].rule.directions.front().count});
+    CHECK(variant.changed);
+    resized.insert(plan.grid);
+  }
+  CHECK(resized.size() == 2);
 }
 
 TEST_CASE("resize CLI: several grids in one run", "[synthesis][grid][cli]") {

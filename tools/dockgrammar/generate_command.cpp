@@ -93,7 +93,8 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_triangles = options->max_triangles;
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
-    std::size_t limited = 0, rebuilt = 0, unchanged = 0;
+    std::size_t limited = 0, rebuilt = 0, unchanged = 0, one_grid_only = 0;
+    std::string one_grid_reason;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t n = 0; n < options->count; ++n) {
@@ -111,7 +112,11 @@ void add_generate_command(CLI::App& app) {
         if (options->pictures) write_mesh_picture(png, mesh, material_colors(mesh, grammar.materials), {}, picture);
       }
       nlohmann::json grids = nlohmann::json::object();
-      for (std::size_t g = 0; g < plan.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = plan.grid_counts[g];
+      for (std::size_t g = 0; g < variant.grid_counts.size(); ++g) grids[grammar.grids[g].rule.name] = variant.grid_counts[g];
+      if (!variant.one_grid_only.empty()) {
+        ++one_grid_only;
+        one_grid_reason = variant.one_grid_only;
+      }
       const ShapeDerivation& d = variant.derivation;
       nlohmann::json productions = nlohmann::json::array();
       for (std::size_t p : d.productions) productions.push_back(p);
@@ -145,6 +150,9 @@ void add_generate_command(CLI::App& app) {
       fmt::print(stderr,
                  "note: {} variant(s) have the exemplar's shape: in up to 9 draws each, the rules gave nothing else\n",
                  unchanged);
+    if (one_grid_only > 0 && !options->quiet)
+      fmt::print(stderr, "note: {} variant(s) resize one grid only, the others keep the exemplar's counts: {}\n", one_grid_only,
+                 one_grid_reason);
     const nlohmann::json manifest = {{"grammar", options->grammar}, {"seed", options->seed}, {"first", options->first},
                                      {"count", options->count},     {"orientation", options->orientation},
                                      {"variants", variants}};
