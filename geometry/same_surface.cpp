@@ -1,5 +1,7 @@
 #include "geometry/same_surface.h"
 
+#include "geometry/cell_key.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,18 +11,13 @@
 namespace dg {
 namespace {
 
-using CellKey = std::array<std::int64_t, 3>;
-
 // The cells (cubes of edge `cell`, model units) that points of the listed triangles of `mesh`
 // fall in, sampled on each triangle in rows parallel to its longest edge, at most one cell apart
 // along and across them (so a sliver costs as few samples as its area needs; a cell the surface
 // only clips may be missed, but a neighbour of it is not); sorted, without repeats.
 std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, double cell) {
   std::vector<CellKey> cells;
-  auto add = [&](const Vec3& p) {
-    cells.push_back({static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                     static_cast<std::int64_t>(std::floor(p.z() / cell))});
-  };
+  auto add = [&](const Vec3& p) { cells.push_back(cell_key(p, cell)); };
   auto compact = [&] {
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
@@ -103,6 +100,21 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
     if (!cells_covered(cells_a, cells_b) || !cells_covered(cells_b, cells_a)) return false;
   }
   return true;
+}
+
+bool same_points(const PointCloud& a, const PointCloud& b, double tolerance) {
+  if (a.positions.empty() || b.positions.empty()) return a.positions.empty() == b.positions.empty();
+  const BoundingBox ba = a.bounds(), bb = b.bounds();
+  if ((ba.min - bb.min).norm() > 2.0 * tolerance || (ba.max - bb.max).norm() > 2.0 * tolerance) return false;
+  auto cells_of = [&](const PointCloud& cloud) {
+    std::vector<CellKey> cells;
+    for (const Vec3& p : cloud.positions) cells.push_back(cell_key(p, tolerance));
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
+  };
+  const std::vector<CellKey> cells_a = cells_of(a), cells_b = cells_of(b);
+  return cells_covered(cells_a, cells_b) && cells_covered(cells_b, cells_a);
 }
 
 }  // namespace dg

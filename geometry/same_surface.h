@@ -1,6 +1,6 @@
 #pragma once
 // Whether two triangle meshes are the same surface up to a tolerance, however they are
-// triangulated or layered.
+// triangulated or layered; and whether two point clouds sample the same surface.
 
 #include "geometry/mesh.h"
 
@@ -13,5 +13,11 @@ namespace dg {
 /// them. Area is not compared: a mesh holding a hidden second layer of faces (duplicated
 /// triangles, as real assets have) is the same surface.
 bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance);
+
+/// True when `a` and `b` have bounding boxes within 2 `tolerance` (model units) and their points
+/// cover each other on cells of edge `tolerance` (every cell one cloud has a point in touches
+/// one the other has a point in): two samplings of one surface, at least one point per cell
+/// where it passes, within about 3.5 tolerance of each other.
+bool same_points(const PointCloud& a, const PointCloud& b, double tolerance);
 
 }  // namespace dg

@@ -48,4 +48,30 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
     mesh.materials.clear();
 }
 
+PointCloud subcloud(const PointCloud& cloud, const std::vector<std::uint32_t>& points) {
+  PointCloud part;
+  part.positions.reserve(points.size());
+  for (std::uint32_t p : points) part.positions.push_back(cloud.positions[p]);
+  if (cloud.has_normals()) {
+    part.normals.reserve(points.size());
+    for (std::uint32_t p : points) part.normals.push_back(cloud.normals[p]);
+  }
+  return part;
+}
+
+PointCloud transformed(const PointCloud& cloud, const RigidTransform& motion) {
+  PointCloud moved = cloud;
+  for (Vec3& p : moved.positions) p = motion.apply(p);
+  for (Vec3& n : moved.normals) n = motion.rotation * n;
+  return moved;
+}
+
+void append_points(PointCloud& cloud, const PointCloud& part) {
+  if (part.positions.empty()) return;
+  const bool keep_normals = (cloud.positions.empty() || cloud.has_normals()) && part.has_normals();
+  if (!keep_normals) cloud.normals.clear();
+  cloud.positions.insert(cloud.positions.end(), part.positions.begin(), part.positions.end());
+  if (keep_normals) cloud.normals.insert(cloud.normals.end(), part.normals.begin(), part.normals.end());
+}
+
 }  // namespace dg

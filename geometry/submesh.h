@@ -1,5 +1,5 @@
 #pragma once
-// Selecting and moving parts of a mesh.
+// Selecting and moving parts of a mesh or a point cloud.
 
 #include "geometry/mesh.h"
 #include "geometry/rigid_transform.h"
@@ -22,5 +22,15 @@ TriangleMesh transformed(const TriangleMesh& mesh, const RigidTransform& motion)
 /// Appends `part` (vertices, triangles and materials) to `mesh`. Material indices are kept when
 /// both sides carry them (or one side has no triangles); otherwise the result has none.
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part);
+
+/// The points of `cloud` listed in `points` (in that order, with their normals when it has them).
+PointCloud subcloud(const PointCloud& cloud, const std::vector<std::uint32_t>& points);
+
+/// `cloud` moved by a rigid motion (normals turned with it).
+PointCloud transformed(const PointCloud& cloud, const RigidTransform& motion);
+
+/// Appends the points of `part` to `cloud`; normals are kept when both carry them (or `cloud`
+/// is empty), else the result has none. An empty `part` changes nothing.
+void append_points(PointCloud& cloud, const PointCloud& part);
 
 }  // namespace dg

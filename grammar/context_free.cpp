@@ -152,7 +152,7 @@ struct Node {
   std::size_t klass = kNone;
   RigidTransform frame;  // non-terminal frame -> this location
   RigidTransform frame_inverse;
-  std::vector<std::uint32_t> piece;  // triangles of the cut exemplar in the docker, ascending
+  std::vector<std::uint32_t> piece;  // triangles of the cut exemplar (or points of a cloud) in the docker, ascending
   bool kept = true;
   std::size_t parent = kNone;
   std::vector<std::size_t> children;
@@ -224,6 +224,7 @@ class Builder {
   Builder(const PreparedModel& prepared, const ContextFreeOptions& options, const ProgressCallback& progress)
       : surface_(prepared.surface),
         mesh_(prepared.model.mesh),
+        cloud_(prepared.model.is_point_cloud() ? &prepared.model.cloud : nullptr),
         options_(options),
         progress_(progress),
         exemplar_closed_(is_closed_and_oriented(mesh_)) {}
@@ -232,12 +233,16 @@ class Builder {
     collect_nodes(sites, stats);
     assign_classes();
     choose_seams();
-    screen_fit();
-    cut_model();
-    cut_pieces();
-    check_fit();
+    if (cloud_) {
+      point_pieces();
+    } else {
+      screen_fit();
+      cut_model();
+      cut_pieces();
+      check_fit();
+    }
     report(0.95);
-    join_fragments();
+    if (!cloud_) join_fragments();
     count_sites(stats);
     build_tree();
     ContextFreeGrammar grammar;
@@ -517,6 +522,31 @@ class Builder {
     }
   }
 
+  // The docker piece of every kept node of a point cloud: the points in its docker cells and, in
+  // its band cells, those on the docker side of its seam; ascending. Points have no seam curve to
+  // fit, so every location is kept (misfit 0).
+  void point_pieces() {
+    std::vector<std::vector<std::uint32_t>> cell_points(surface_.cell_count());
+    for (std::uint32_t p = 0; p < cloud_->positions.size(); ++p) {
+      const std::int64_t cell = nearest_cell(surface_, cloud_->positions[p]);
+      if (cell >= 0) cell_points[static_cast<std::size_t>(cell)].push_back(p);
+    }
+    const double total = static_cast<double>(std::max<std::size_t>(1, kept_nodes()));
+    std::size_t done = 0;
+    for (Node& n : nodes_) {
+      if (!n.kept) continue;
+      report(0.9 * static_cast<double>(done++) / total);
+      for (std::uint32_t c : n.docker) n.piece.insert(n.piece.end(), cell_points[c].begin(), cell_points[c].end());
+      for (std::uint32_t c : n.site)
+        for (std::uint32_t p : cell_points[c])
+          if (on_docker_side(class_seam_[n.klass], surface_, class_docker_side_[n.klass], n.frame_inverse, cloud_->positions[p]))
+            n.piece.push_back(p);
+      std::sort(n.piece.begin(), n.piece.end());
+      n.piece.erase(std::unique(n.piece.begin(), n.piece.end()), n.piece.end());
+    }
+    class_misfit_.assign(class_nodes_.size(), 0.0);
+  }
+
   // A docker cut at one location must fit the hole of every other location: the seam curve of
   // each location, moved into the non-terminal's frame, must be that of its first location
   // (within kSeamFitFraction of eps). Records each class's largest misfit.
@@ -648,13 +678,34 @@ class Builder {
                             {.straighten_open_borders = true, .moved_distance = snap_distance()});
   }
 
+  // Terminal points of `node` (kNone: the whole cloud) without the dockers of `children`, in
+  // model coordinates.
+  PointCloud point_remainder(std::size_t node, const std::vector<std::size_t>& children) {
+    for (std::size_t c : children)
+      for (std::uint32_t p : nodes_[c].piece) taken_[p] = 1;
+    std::vector<std::uint32_t> own;
+    if (node == kNone) {
+      for (std::uint32_t p = 0; p < cloud_->positions.size(); ++p)
+        if (!taken_[p]) own.push_back(p);
+    } else {
+      for (std::uint32_t p : nodes_[node].piece)
+        if (!taken_[p]) own.push_back(p);
+    }
+    for (std::size_t c : children)
+      for (std::uint32_t p : nodes_[c].piece) taken_[p] = 0;
+    return subcloud(*cloud_, own);
+  }
+
   // The production of `node` (kNone: the axiom) with the given children; children must have
   // their own productions already (their dockers are smaller, so they are built first).
   ShapeProduction production(std::size_t node, const std::vector<std::size_t>& children) {
     ShapeProduction p;
     const RigidTransform to_frame = node == kNone ? RigidTransform{} : nodes_[node].frame.inverse();
     p.lhs = node == kNone ? kNoProduction : class_index_[nodes_[node].klass];
-    p.terminal = transformed(remainder(node, children), to_frame);
+    if (cloud_)
+      p.terminal_points = transformed(point_remainder(node, children), to_frame);
+    else
+      p.terminal = transformed(remainder(node, children), to_frame);
     p.source_site = node == kNone ? 0 : node;
     p.source_frame = node == kNone ? RigidTransform{} : nodes_[node].frame;
     for (std::size_t c : children)
@@ -662,14 +713,16 @@ class Builder {
     return p;
   }
 
-  double piece_area(const std::vector<std::uint32_t>& piece) const {
+  // Size of a piece: its area (model units^2), or for a point cloud its number of points.
+  double piece_size(const std::vector<std::uint32_t>& piece) const {
+    if (cloud_) return static_cast<double>(piece.size());
     double area = 0.0;
     for (std::uint32_t t : piece) area += 0.5 * cut_.area_vector(t).norm();
     return area;
   }
 
   void make_productions(ContextFreeGrammar& grammar, ContextFreeStats& stats) {
-    taken_.assign(cut_.triangles.size(), 0);
+    taken_.assign(cloud_ ? cloud_->positions.size() : cut_.triangles.size(), 0);
     // Non-terminals that survived, indexed densely (named once the unreachable ones are gone).
     class_index_.assign(class_nodes_.size(), kNone);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
@@ -706,7 +759,7 @@ class Builder {
     };
     for (std::size_t i : order) {
       const UnfoldedChildren candidates = unfolded(kept_only(nodes_[i].children));
-      docker_area_[i] = piece_area(nodes_[i].piece);
+      docker_area_[i] = piece_size(nodes_[i].piece);
       for (const auto& set :
            random_independent_sets(candidates, options_.independent_set_trials, random)) {
         ShapeProduction p = production(i, set);
@@ -736,7 +789,8 @@ class Builder {
       const auto reached = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), 1));
       if (reached <= most_reached) continue;
       ShapeProduction axiom = production(kNone, set);
-      if (!adds_up(axiom, set, mesh_.area()) || opens_holes(axiom)) continue;
+      if (!adds_up(axiom, set, cloud_ ? static_cast<double>(cloud_->positions.size()) : mesh_.area()) || opens_holes(axiom))
+        continue;
       grammar.axiom = std::move(axiom);
       most_reached = reached;
     }
@@ -798,16 +852,17 @@ class Builder {
   // would open a hole in every result (verify requires closed results of closed exemplars).
   bool opens_holes(const ShapeProduction& p) const { return exemplar_closed_ && has_degenerate_triangle(p.terminal); }
 
-  // The terminal and the children's dockers make up the parent's docker (area within 0.1 %):
-  // a cut that does not separate pieces cleanly is not used.
+  // The terminal and the children's dockers make up the parent's docker (area within 0.1 %, or
+  // every point): a cut that does not separate pieces cleanly is not used.
   bool adds_up(const ShapeProduction& p, const std::vector<std::size_t>& children, double docker_area) const {
-    double area = p.terminal.area();
+    double area = cloud_ ? static_cast<double>(p.terminal_points.positions.size()) : p.terminal.area();
     for (std::size_t c : children) area += docker_area_[c];
     return std::abs(area - docker_area) <= 1e-3 * docker_area;
   }
 
   const VoxelSurface& surface_;
   const TriangleMesh& mesh_;
+  const PointCloud* cloud_;  // the exemplar's points when it is a point cloud (then mesh_ is empty)
   const ContextFreeOptions& options_;
   const ProgressCallback& progress_;
   bool exemplar_closed_;
@@ -820,10 +875,10 @@ class Builder {
   std::vector<SeamFaceIndex> class_face_index_;       // per class: its seam's voxel faces by plane
   TriangleMesh cut_;                                  // the exemplar cut along every kept seam
   std::vector<std::uint32_t> origin_;                 // per triangle of cut_: its exemplar triangle
-  std::vector<char> taken_;                           // scratch flags per triangle of cut_
+  std::vector<char> taken_;                           // scratch flags per triangle of cut_ (per point of a cloud)
   std::vector<std::size_t> roots_;
   std::vector<std::size_t> class_index_;  // class -> non-terminal index
-  std::vector<double> docker_area_;       // per node, model units^2
+  std::vector<double> docker_area_;       // per node: piece_size of its docker
 };
 
 }  // namespace
@@ -838,11 +893,6 @@ ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, con
                                               const ContextFreeOptions& options, ContextFreeStats* stats,
                                               const ProgressCallback& progress) {
   ContextFreeStats local;
-  if (prepared.model.is_point_cloud()) {
-    local.point_cloud = true;
-    if (stats) *stats = local;
-    return {};
-  }
   Builder builder(prepared, options, progress);
   ContextFreeGrammar grammar = builder.build(sites, local);
   if (stats) *stats = local;

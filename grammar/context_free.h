@@ -17,7 +17,8 @@
 // else the voxel faces between the band's cells next to the docker and the cells beyond them.
 // A docker cut at one node then fits exactly into the seam of any other node of the same
 // non-terminal; nodes where it does not (the seam curves differ) are dropped, and so are sites
-// that slide along themselves (slippage).
+// that slide along themselves (slippage). A point cloud's pieces are sets of its points split by
+// the same seams (points have no seam curve to fit).
 
 #include "geometry/mesh.h"
 #include "geometry/prepared_model.h"
@@ -26,6 +27,7 @@
 #include "grammar/docking_sites.h"
 #include "grammar/seam_surface.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -58,7 +60,8 @@ struct ChildSlot {
 /// lhs -> terminal + children. The axiom has lhs == kNoProduction.
 struct ShapeProduction {
   std::size_t lhs = kNoProduction;
-  TriangleMesh terminal;  ///< in the lhs frame (model frame for the axiom)
+  TriangleMesh terminal;  ///< in the lhs frame (model frame for the axiom); empty for a point cloud
+  PointCloud terminal_points;  ///< a point-cloud exemplar's terminal: its points (with normals when it had them), same frame
   std::vector<ChildSlot> children;
   std::size_t source_site = 0;  ///< exemplar location it was cut from (report only)
   /// From the lhs frame to the model at that location (identity for the axiom); tells how the
@@ -71,6 +74,11 @@ struct ContextFreeGrammar {
   std::vector<ShapeProduction> productions;  ///< all with lhs set, grouped by nothing in particular
   ShapeProduction axiom;
   bool empty() const { return nonterminals.empty(); }
+  /// True when the terminals are points (the grammar of a point cloud).
+  bool of_points() const {
+    return !axiom.terminal_points.positions.empty() ||
+           std::any_of(productions.begin(), productions.end(), [](const ShapeProduction& p) { return !p.terminal_points.positions.empty(); });
+  }
 };
 
 /// How close (model units) the seam vertices of pieces derived from `grammar` are welded: twice
@@ -99,14 +107,14 @@ struct ContextFreeStats {
   /// Non-terminals dropped because no derivation reaches them from the axiom (their locations
   /// lie in alternatives that the axiom's independent set of sites left out).
   std::size_t unreachable_nonterminals = 0;
-  /// The exemplar is a point cloud: no context-free rules are built for it (their pieces are cut
-  /// along seam surfaces through triangles; only grid rules cut points).
-  bool point_cloud = false;
 };
 
-/// Builds the context-free grammar of a prepared mesh from its docking sites (empty for a point
-/// cloud, see ContextFreeStats::point_cloud). Deterministic for a given seed. `progress` hears stage "context-free rules" with the fraction done (most of
-/// the time goes into cutting the exemplar along the seams of every site location).
+/// Builds the context-free grammar of a prepared model from its docking sites. Deterministic for
+/// a given seed. A mesh's pieces are cut from its triangles along the seams; a point cloud's are
+/// its points, each going to the dockers whose cells hold it (in a band cell, on the docker side
+/// of the seam), so every location fits (seam misfit 0). `progress` hears stage "context-free
+/// rules" with the fraction done (for meshes most of the time goes into cutting the exemplar
+/// along the seams of every site location).
 ContextFreeGrammar build_context_free_grammar(const PreparedModel& prepared, const DockingSiteResult& sites,
                                               const ContextFreeOptions& options, ContextFreeStats* stats = nullptr,
                                               const ProgressCallback& progress = {});

@@ -99,7 +99,7 @@ void add_material_runs(nlohmann::json& object, const char* key, const TriangleMe
   if (!grammar.materials.empty() && mesh.has_materials()) object[key] = material_runs_json(mesh);
 }
 
-// One production: its terminal goes to a sidecar file (none when it has no triangles).
+// One production: its terminal goes to a sidecar file (none when it has no triangles or points).
 nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProduction& p, const std::filesystem::path& folder,
                                const std::string& file) {
   const ContextFreeGrammar& g = grammar.context_free;
@@ -112,10 +112,14 @@ nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProductio
   if (!p.terminal.triangles.empty()) {
     write_mesh(folder / file, p.terminal);
     terminal = folder.filename().string() + "/" + file;
+  } else if (!p.terminal_points.positions.empty()) {
+    write_point_cloud(folder / file, p.terminal_points);
+    terminal = folder.filename().string() + "/" + file;
   }
   nlohmann::json out = {{"lhs", p.lhs == kNoProduction ? nlohmann::json(nullptr) : nlohmann::json(g.nonterminals[p.lhs].name)},
                         {"terminal", terminal},
                         {"triangles", p.terminal.triangles.size()},
+                        {"points", p.terminal_points.positions.size()},
                         {"children", children},
                         {"source_site", p.source_site}};
   if (p.source_frame) out["source_frame"] = matrix_json(p.source_frame->matrix());
@@ -216,9 +220,11 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
 
 namespace {
 
-template <class Load>
+// `load_terminal(relative path, production json, production)` reads a terminal's sidecar into
+// the production (its mesh, or its points for a point-cloud grammar).
+template <class LoadTerminal>
 ShapeProduction read_production(const nlohmann::json& p, const std::string& where, const std::map<std::string, std::size_t>& names,
-                           std::size_t production_count, const Load& load) {
+                           std::size_t production_count, const LoadTerminal& load_terminal) {
   auto nonterminal = [&](const std::string& name) {
     auto it = names.find(name);
     if (it == names.end()) throw InputError(where + ": unknown non-terminal \"" + name + "\"");
@@ -228,7 +234,7 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
   if (!p.contains("lhs")) throw InputError(where + ": a production has no \"lhs\"");
   if (!p.at("lhs").is_null()) production.lhs = nonterminal(field<std::string>(p, "lhs", where));
   if (!p.contains("terminal")) throw InputError(where + ": a production has no \"terminal\"");
-  if (!p.at("terminal").is_null()) production.terminal = load(field<std::string>(p, "terminal", where), p);
+  if (!p.at("terminal").is_null()) load_terminal(field<std::string>(p, "terminal", where), p, production);
   production.source_site = field<std::size_t>(p, "source_site", where);
   if (p.contains("source_frame")) production.source_frame = matrix_field(p, "source_frame", where);
   for (const nlohmann::json& c : field<nlohmann::json>(p, "children", where)) {
@@ -244,8 +250,8 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
   return production;
 }
 
-template <class Load>
-void read_context_free(const nlohmann::json& document, int version, const std::string& where, const Load& load,
+template <class LoadTerminal>
+void read_context_free(const nlohmann::json& document, int version, const std::string& where, const LoadTerminal& load_terminal,
                        ContextFreeGrammar& cf) {
   std::map<std::string, std::size_t> names;
   for (const nlohmann::json& n : field<nlohmann::json>(document, "nonterminals", where)) {
@@ -264,10 +270,10 @@ void read_context_free(const nlohmann::json& document, int version, const std::s
   if (cf.nonterminals.empty()) return;
   const nlohmann::json productions = field<nlohmann::json>(document, "productions", where);
   for (const nlohmann::json& p : productions) {
-    cf.productions.push_back(read_production(p, where, names, productions.size(), load));
+    cf.productions.push_back(read_production(p, where, names, productions.size(), load_terminal));
     if (cf.productions.back().lhs == kNoProduction) throw InputError(where + ": a production has no left-hand side");
   }
-  cf.axiom = read_production(field<nlohmann::json>(document, "axiom", where), where, names, productions.size(), load);
+  cf.axiom = read_production(field<nlohmann::json>(document, "axiom", where), where, names, productions.size(), load_terminal);
 }
 
 }  // namespace
@@ -377,8 +383,13 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     }
     grammar.grids.push_back(std::move(entry));
   }
-  if (version >= 2) read_context_free(document, version, where, load, grammar.context_free);
-  if (points && !grammar.context_free.empty()) throw InputError(where + ": a point-cloud grammar has no context-free rules");
+  auto load_terminal = [&](const std::string& relative, const nlohmann::json& owner, ShapeProduction& production) {
+    if (points)
+      production.terminal_points = load_points(relative);
+    else
+      production.terminal = load(relative, owner);
+  };
+  if (version >= 2) read_context_free(document, version, where, load_terminal, grammar.context_free);
   return grammar;
 }
 

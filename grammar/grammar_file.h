@@ -14,8 +14,9 @@
 
 namespace dg {
 
-/// Versions 1 (grids only), 2 (planar seams) and 3 (no point-cloud exemplars) are still read.
-inline constexpr int kGrammarFileVersion = 4;
+/// Versions 1 (grids only), 2 (planar seams), 3 (no point-cloud exemplars) and 4 (point-cloud
+/// grammars without context-free rules) are still read.
+inline constexpr int kGrammarFileVersion = 5;
 
 /// A grid rule with its pieces and where they are stored.
 struct GridWithPieces {

@@ -5,7 +5,8 @@
 namespace dg {
 
 bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance) {
-  if (a.lhs != b.lhs || a.children.size() != b.children.size() || a.terminal.triangles.empty() != b.terminal.triangles.empty())
+  if (a.lhs != b.lhs || a.children.size() != b.children.size() || a.terminal.triangles.empty() != b.terminal.triangles.empty() ||
+      a.terminal_points.positions.empty() != b.terminal_points.positions.empty())
     return false;
   for (std::size_t i = 0; i < a.children.size(); ++i) {
     const ChildSlot &x = a.children[i], &y = b.children[i];
@@ -13,6 +14,7 @@ bool same_production(const ShapeProduction& a, const ShapeProduction& b, double 
         !same_motion(x.placement, y.placement, Vec3::Zero(), tolerance))
       return false;
   }
+  if (!a.terminal_points.positions.empty()) return same_points(a.terminal_points, b.terminal_points, tolerance);
   if (a.terminal.triangles.empty()) return true;
   return same_surface(a.terminal, b.terminal, tolerance);
 }

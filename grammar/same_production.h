@@ -9,7 +9,8 @@ namespace dg {
 
 /// True when `a` and `b` are equal up to `tolerance` (model units): the same left side, the
 /// same child slots (non-terminal, exemplar production, placement within tolerance) and
-/// terminals of the same surface however they are triangulated (same_surface).
+/// terminals of the same surface however they are triangulated (same_surface), or, for point
+/// clouds, however they are sampled (same_points).
 bool same_production(const ShapeProduction& a, const ShapeProduction& b, double tolerance);
 
 }  // namespace dg

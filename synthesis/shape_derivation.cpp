@@ -7,11 +7,13 @@
 #include "geometry/random.h"
 #include "grammar/seam_curve.h"
 #include "synthesis/piece_collision.h"
+#include "synthesis/point_collision.h"
 
 #include <algorithm>
 #include <deque>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 namespace dg {
 namespace {
@@ -67,15 +69,37 @@ class Candidates {
   std::vector<Vec3> up_in_frame_;  // per production: the up axis in its lhs frame
 };
 
+// What a derivation places, meshes or points: the production's terminal, the collision test
+// (Embree for triangles, shared cubes for points), how a placed piece joins the result.
+struct MeshPlacement {
+  using Piece = TriangleMesh;
+  using Collisions = PieceCollisions;
+  static const Piece& terminal(const ShapeProduction& p) { return p.terminal; }
+  static std::size_t size(const Piece& piece) { return piece.triangles.size(); }
+  static double default_seam_tolerance(double eps) { return eps; }
+};
+
+struct PointPlacement {
+  using Piece = PointCloud;
+  using Collisions = PointCollisions;
+  static const Piece& terminal(const ShapeProduction& p) { return p.terminal_points; }
+  static std::size_t size(const Piece& piece) { return piece.positions.size(); }
+  // Points of two pieces share a cube of edge eps across their seam: within its diagonal.
+  static double default_seam_tolerance(double eps) { return 2.0 * eps; }
+};
+
 // One derivation drawing from `random`; nothing when a slot's exemplar production, placed after
-// its random choices collided (or past the depth or triangle limits), would itself collide with
+// its random choices collided (or past the depth or size limits), would itself collide with
 // what an earlier random choice put there. With options.exemplar_only nothing is checked.
+template <class Placement>
 std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, const Candidates& choices, double eps,
                                            const ShapeDerivationOptions& options, Random& random) {
+  using Piece = typename Placement::Piece;
+  constexpr bool points = std::is_same_v<Piece, PointCloud>;
   ShapeDerivation result;
-  const double seam_tolerance = options.seam_tolerance > 0 ? options.seam_tolerance : eps;
-  PieceCollisions collisions(seam_tolerance);
-  std::size_t triangles = 0;
+  const double seam_tolerance = options.seam_tolerance > 0 ? options.seam_tolerance : Placement::default_seam_tolerance(eps);
+  typename Placement::Collisions collisions(points ? eps : seam_tolerance);
+  std::size_t placed_size = 0;
   std::deque<OpenSlot> open;
   std::uint32_t placed = 0;  // pieces placed so far
   std::vector<std::uint32_t> seam_copies;  // per vertex of the result: its placed piece when on an open edge of it
@@ -83,32 +107,37 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
   std::vector<char> open_known(grammar.productions.size() + 1, 0);
   // Adds production `index` (the axiom for productions.size()) already moved to `world` as
   // `piece` to the result; the caller has added `piece` to `collisions`.
-  auto place = [&](std::size_t index, const RigidTransform& world, int depth, const TriangleMesh& piece) {
+  auto place = [&](std::size_t index, const RigidTransform& world, int depth, const Piece& piece) {
     const ShapeProduction& p = index < grammar.productions.size() ? grammar.productions[index] : grammar.axiom;
-    if (!open_known[index]) open_of[index] = open_edge_vertices(p.terminal), open_known[index] = 1;
-    append_seam_labels(seam_copies, open_of[index], placed++);
-    append_mesh(result.mesh, piece);
-    if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
-    triangles += piece.triangles.size();
+    if constexpr (points) {
+      append_points(result.points, piece);
+      result.point_nonterminal.resize(result.points.positions.size(), p.lhs);
+    } else {
+      if (!open_known[index]) open_of[index] = open_edge_vertices(p.terminal), open_known[index] = 1;
+      append_seam_labels(seam_copies, open_of[index], placed++);
+      append_mesh(result.mesh, piece);
+      if (!options.weld_seams) result.triangle_nonterminal.resize(result.mesh.triangles.size(), p.lhs);
+    }
+    placed_size += Placement::size(piece);
     for (const ChildSlot& c : p.children) open.push_back({c, world.after(c.placement), depth + 1});
   };
-  collisions.add(grammar.axiom.terminal);
-  place(grammar.productions.size(), RigidTransform{}, 0, grammar.axiom.terminal);
+  collisions.add(Placement::terminal(grammar.axiom));
+  place(grammar.productions.size(), RigidTransform{}, 0, Placement::terminal(grammar.axiom));
 
   while (!open.empty()) {
     const OpenSlot slot = open.front();
     open.pop_front();
     const bool too_deep = slot.depth > options.max_depth;
-    const bool too_big = triangles > options.max_triangles;
+    const bool too_big = placed_size > options.max_triangles;
     result.depth_limited = result.depth_limited || too_deep;
     result.triangle_limited = result.triangle_limited || too_big;
     const std::vector<std::size_t> candidates = choices.at(slot.slot.nonterminal, slot.world);
-    std::optional<std::pair<std::size_t, TriangleMesh>> accepted;  // production and its moved terminal
+    std::optional<std::pair<std::size_t, Piece>> accepted;  // production and its moved terminal
     if (!options.exemplar_only && !too_deep && !too_big && !candidates.empty()) {
       for (int attempt = 0; attempt < options.retries && !accepted; ++attempt) {
         const std::size_t pick = candidates[static_cast<std::size_t>(random.uniform() * static_cast<double>(candidates.size()))];
         const ShapeProduction& p = grammar.productions[pick];
-        TriangleMesh piece = transformed(p.terminal, slot.world);
+        Piece piece = transformed(Placement::terminal(p), slot.world);
         if (!collisions.add_unless_collides(piece, contact_of(grammar, p, slot.world, seam_tolerance))) {
           ++result.collisions_retried;
           continue;
@@ -120,7 +149,7 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
     if (!accepted) {
       const std::size_t original = slot.slot.original_production;
       const ShapeProduction& p = grammar.productions[original];
-      TriangleMesh piece = transformed(p.terminal, slot.world);
+      Piece piece = transformed(Placement::terminal(p), slot.world);
       if (options.exemplar_only)
         collisions.add(piece);
       else if (!collisions.add_unless_collides(piece, contact_of(grammar, p, slot.world, seam_tolerance)))
@@ -131,11 +160,29 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
     result.changed = result.changed || accepted->first != slot.slot.original_production;
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
-  if (options.weld_seams) {
+  if (!points && options.weld_seams) {
     resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_copies, kSeamWeldFloorFraction * eps);
     result.mesh = merge_flat_faces(result.mesh);
   }
   return result;
+}
+
+// derive_shape for meshes or points.
+template <class Placement>
+ShapeDerivation derive(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
+  const Candidates choices(grammar, options.up);
+  Random random(options.seed);
+  std::size_t restarts = 0;
+  for (; restarts <= options.restarts; ++restarts)
+    if (std::optional<ShapeDerivation> derived = derive_once<Placement>(grammar, choices, eps, options, random)) {
+      derived->restarts = restarts;
+      return std::move(*derived);
+    }
+  ShapeDerivationOptions rebuild = options;
+  rebuild.exemplar_only = true;
+  ShapeDerivation exemplar = *derive_once<Placement>(grammar, choices, eps, rebuild, random);
+  exemplar.restarts = restarts;
+  return exemplar;
 }
 
 }  // namespace
@@ -159,19 +206,7 @@ bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivat
 
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
   if (grammar.empty()) throw std::invalid_argument("derive_shape: the grammar has no context-free rules");
-  const Candidates choices(grammar, options.up);
-  Random random(options.seed);
-  std::size_t restarts = 0;
-  for (; restarts <= options.restarts; ++restarts)
-    if (std::optional<ShapeDerivation> derived = derive_once(grammar, choices, eps, options, random)) {
-      derived->restarts = restarts;
-      return std::move(*derived);
-    }
-  ShapeDerivationOptions rebuild = options;
-  rebuild.exemplar_only = true;
-  ShapeDerivation exemplar = *derive_once(grammar, choices, eps, rebuild, random);
-  exemplar.restarts = restarts;
-  return exemplar;
+  return grammar.of_points() ? derive<PointPlacement>(grammar, eps, options) : derive<MeshPlacement>(grammar, eps, options);
 }
 
 }  // namespace dg

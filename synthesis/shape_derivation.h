@@ -23,7 +23,7 @@ struct ShapeDerivationOptions {
   int retries = 10;                          ///< paper: 10
   std::size_t restarts = 10;                 ///< derivations started over before the exemplar is rebuilt
   int max_depth = 24;                        ///< nesting depth of slots
-  std::size_t max_triangles = 5'000'000;     ///< placed triangles before only exemplar productions are used
+  std::size_t max_triangles = 5'000'000;     ///< placed triangles (points) before only exemplar productions are used
   bool exemplar_only = false;                ///< always take the exemplar's production (rebuilds the exemplar)
   double seam_tolerance = 0.0;               ///< model units; 0 = the grammar's eps
   bool weld_seams = true;                    ///< false: pieces stay separate (for pictures)
@@ -35,6 +35,7 @@ struct ShapeDerivationOptions {
 
 struct ShapeDerivation {
   TriangleMesh mesh;                        ///< welded at the seams, flat faces split by seams merged
+  PointCloud points;                        ///< a point-cloud grammar's result (then `mesh` is empty)
   std::vector<std::size_t> productions;     ///< applied productions (indices), in placement order
   bool changed = false;                     ///< some slot took another production than the exemplar's
   std::size_t collisions_retried = 0;       ///< random choices rejected for colliding
@@ -47,6 +48,8 @@ struct ShapeDerivation {
   /// Without welding: the non-terminal whose production placed each triangle (kNoProduction
   /// for the axiom's terminal). Empty when the seams were welded.
   std::vector<std::size_t> triangle_nonterminal;
+  /// The same for each point of a point-cloud grammar's result (points are never welded).
+  std::vector<std::size_t> point_nonterminal;
 };
 
 /// Whether some slot of the exemplar's own derivation (within max_depth) may take a production
@@ -57,7 +60,9 @@ bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivat
 /// Derives one model from `grammar` (must not be empty). `eps` is the grammar's voxel size:
 /// seams of different placed pieces are welded within seam_weld_tolerance (grammar/context_free.h),
 /// vertices of one piece only within 1e-4 eps (see resolve_t_junctions). Deterministic for a
-/// given seed.
+/// given seed. A point-cloud grammar (ContextFreeGrammar::of_points) gives `points`: pieces
+/// collide when their points share a cube of edge eps away from their seams (seam tolerance 2 eps
+/// unless set), and max_triangles counts points.
 ShapeDerivation derive_shape(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options);
 
 }  // namespace dg

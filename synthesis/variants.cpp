@@ -86,10 +86,13 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     for (std::uint64_t draw = 0; draw <= kRedraws; ++draw) {
       derivation.seed = draw == 0 ? plan.seed : variant_seed(plan.seed, draw);
       variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
-      variant.changed = variant.derivation.changed && !same_surface(variant.derivation.mesh, grammar.exemplar, grammar.eps);
+      variant.changed = variant.derivation.changed &&
+                        (is_point_grammar(grammar) ? !same_points(variant.derivation.points, grammar.exemplar_points, grammar.eps)
+                                                   : !same_surface(variant.derivation.mesh, grammar.exemplar, grammar.eps));
       if (variant.changed || (draw == 0 && !derivation_has_choice(grammar.context_free, derivation))) break;
     }
     variant.mesh = std::move(variant.derivation.mesh);
+    variant.points = std::move(variant.derivation.points);
     return variant;
   }
   std::vector<GridResize> resizes;

@@ -39,7 +39,7 @@ struct VariantPlan {
 /// A built variant.
 struct Variant {
   TriangleMesh mesh;   ///< empty for a point-cloud grammar
-  PointCloud points;   ///< a point-cloud grammar's variant (grid counts only)
+  PointCloud points;   ///< a point-cloud grammar's variant
   ShapeDerivation derivation;  ///< context-free variants: what was applied (its mesh is moved to `mesh`)
   /// It differs from the exemplar: other grid counts, or a derivation whose surface is not the
   /// exemplar's (see build_variant).

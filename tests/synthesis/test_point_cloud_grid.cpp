@@ -1,5 +1,6 @@
 // Grids of point clouds: a scan-like cloud drawn on a generated facade gives the facade's grid,
-// and its resized points lie on (and cover) the generator's larger facade.
+// and its resized points lie on (and cover) the generator's larger facade. The command-line test
+// also runs the context-free rules of points end to end.
 
 #include "synthesis/grid_resize.h"
 #include "synthesis/verify.h"
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <set>
 
 using dg::Vec3;
@@ -132,7 +134,7 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   REQUIRE(summary["grids"].size() == 1);
   CHECK(summary["grids"][0]["dims"] == 2);
   CHECK(summary["grids"][0]["pieces"][0].contains("points"));
-  CHECK(summary["productions"].empty());
+  CHECK(!summary["productions"].empty());  // context-free rules of points (test_point_cloud_rules.cpp)
   CHECK(summary["dockers"].get<int>() > 0);
   CHECK(summary["point_cloud"]["points"] == 400000);
   CHECK(summary["point_cloud"]["points_per_voxel"].get<double>() > 3.0);
@@ -144,7 +146,8 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   const dg::ShapeGrammar grammar = dg::read_grammar(grammar_path);
   CHECK(dg::is_point_grammar(grammar));
   CHECK(grammar.exemplar_points.positions.size() == 400000);
-  for (const std::string picture : {"facade_points.grid1.png", "facade_points.sites.png"})
+  CHECK(grammar.context_free.of_points());
+  for (const std::string picture : {"facade_points.grid1.png", "facade_points.sites.png", "facade_points.rules.png"})
     CHECK(std::filesystem::exists(folder / "out" / picture));
   nlohmann::json unknown_surface = grammar_json;
   unknown_surface["surface"] = "voxels";
@@ -190,15 +193,29 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   CHECK(as_obj.status == 2);
   CHECK(as_obj.output.find("point clouds are written as .ply only") != std::string::npos);
 
-  // Generate: point clouds by default, an OBJ request is refused.
-  const dg::test::CliRun generated =
-      dg::test::run_cli("generate " + grammar_path.string() + " -q --count 2 -o " + (folder / "variants").string(), folder);
-  REQUIRE(generated.status == 0);
-  CHECK(dg::read_model(folder / "variants" / "variant_00000.ply").is_point_cloud());
-  std::ifstream manifest_file(folder / "variants" / "manifest.json");
-  const nlohmann::json manifest = nlohmann::json::parse(manifest_file);
-  CHECK(manifest["variants"][1]["points"].get<std::size_t>() > 0);
-  CHECK(verified(folder / "variants" / "variant_00001.ply")["pass"] == true);
+  // Generate: point clouds by default (context-free variants, then grid variants when asked), the
+  // same seed the same files, an OBJ request refused.
+  for (const std::string rules : {"context-free", "grid"}) {
+    const std::filesystem::path variants = folder / ("variants-" + rules);
+    const dg::test::CliRun generated = dg::test::run_cli(
+        "generate " + grammar_path.string() + " -q --count 2 --rules " + rules + " -o " + variants.string(), folder);
+    REQUIRE(generated.status == 0);
+    CHECK(dg::read_model(variants / "variant_00000.ply").is_point_cloud());
+    std::ifstream manifest_file(variants / "manifest.json");
+    const nlohmann::json manifest = nlohmann::json::parse(manifest_file);
+    CHECK(manifest["variants"][1]["rules"] == rules);
+    CHECK(manifest["variants"][1]["changed"] == true);
+    CHECK(manifest["variants"][1]["points"].get<std::size_t>() > 0);
+    CHECK(verified(variants / "variant_00001.ply")["pass"] == true);
+  }
+  const dg::test::CliRun again = dg::test::run_cli(
+      "generate " + grammar_path.string() + " -q --count 2 --rules context-free -o " + (folder / "again").string(), folder);
+  REQUIRE(again.status == 0);
+  auto bytes = [](const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  CHECK(bytes(folder / "again" / "variant_00001.ply") == bytes(folder / "variants-context-free" / "variant_00001.ply"));
   const dg::test::CliRun obj_variants = dg::test::run_cli(
       "generate " + grammar_path.string() + " -q --count 1 --format obj -o " + (folder / "obj").string(), folder);
   CHECK(obj_variants.status == 2);

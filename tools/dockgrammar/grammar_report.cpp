@@ -22,11 +22,6 @@
 namespace dg::cli {
 namespace {
 
-// Why a point cloud has no context-free rules.
-constexpr const char* kPointCloudRules =
-    "not built for point clouds (their pieces are cut along seam surfaces through triangles; the grid rules cut "
-    "points, so generate and resize vary the grids)";
-
 // Clouds drawn on the bundled facade gave its whole grid from about this many points per
 // occupied voxel (3.0 to 8.8 did; 2.5 gave part of it).
 constexpr double kDensePointsPerVoxel = 3.0;
@@ -181,7 +176,8 @@ nlohmann::json production_json(const ContextFreeGrammar& g, const ShapeProductio
   for (const ChildSlot& c : p.children) children.push_back(g.nonterminals[c.nonterminal].name);
   return {{"lhs", p.lhs == kNoProduction ? "axiom" : g.nonterminals[p.lhs].name},
           {"children", children},
-          {"terminal_triangles", p.terminal.triangles.size()}};
+          {"terminal_triangles", p.terminal.triangles.size()},
+          {"terminal_points", p.terminal_points.positions.size()}};
 }
 
 nlohmann::json nonterminals_json(const ContextFreeGrammar& g) {
@@ -231,31 +227,40 @@ std::string context_free_markdown(const AnalysisReport& report) {
                                                  "them: insert green, delete red, replace blue, slippable grey; a docker "
                                                  "covering more than half the model is only outlined).",
                                                  model_stem(report)));
-  if (report.context_free.point_cloud) return md + fmt::format("Context-free rules: {}.\n\n", kPointCloudRules);
   if (cf.empty())
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
                             report.context_free.sites_slippable, report.context_free.sites_without_fit,
                             unpaired_sites_text(report) + dropped_rules_text(report.context_free));
-  md += "| non-terminal | exemplar sites | productions | seam misfit (eps) |\n|---|---|---|---|\n";
-  for (std::size_t n = 0; n < cf.nonterminals.size(); ++n)
-    md += fmt::format("| {} | {} | {} | {:.1e} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites,
-                      std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; }),
-                      cf.nonterminals[n].seam_misfit / report.grammar.eps);
-  md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
-                    "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
-                    kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
+  const bool points = cf.of_points();
+  md += points ? "| non-terminal | exemplar sites | productions |\n|---|---|---|\n"
+               : "| non-terminal | exemplar sites | productions | seam misfit (eps) |\n|---|---|---|---|\n";
+  for (std::size_t n = 0; n < cf.nonterminals.size(); ++n) {
+    const auto productions =
+        std::count_if(cf.productions.begin(), cf.productions.end(), [&](const ShapeProduction& p) { return p.lhs == n; });
+    md += points ? fmt::format("| {} | {} | {} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites, productions)
+                 : fmt::format("| {} | {} | {} | {:.1e} |\n", cf.nonterminals[n].name, cf.nonterminals[n].sites, productions,
+                               cf.nonterminals[n].seam_misfit / report.grammar.eps);
+  }
+  if (points)
+    md += "\nPieces are the points of each docker (in its docking site's cells, those on the docker side of the seam); "
+          "derived pieces collide when their points share a cube of edge eps away from their seams.\n";
+  else
+    md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
+                      "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
+                      kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
   if (report.context_free.productions_moving_the_model > 0) md += "\n" + moving_text(report.context_free) + ".\n";
   if (report.context_free.unreachable_nonterminals > 0) md += "\n" + unreachable_text(report.context_free) + ".\n";
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
                     model_stem(report));
-  md += "\nProductions (terminal triangles, then the non-terminals they contain):\n\n";
+  md += fmt::format("\nProductions (terminal {}, then the non-terminals they contain):\n\n", points ? "points" : "triangles");
   auto line = [&](const std::string& lhs, const ShapeProduction& p) {
     std::string children;
     for (const ChildSlot& c : p.children) children += " " + cf.nonterminals[c.nonterminal].name;
-    return fmt::format("- {} -> terminal({} triangles){}\n", lhs, p.terminal.triangles.size(), children);
+    return points ? fmt::format("- {} -> terminal({} points){}\n", lhs, p.terminal_points.positions.size(), children)
+                  : fmt::format("- {} -> terminal({} triangles){}\n", lhs, p.terminal.triangles.size(), children);
   };
   md += line("axiom", cf.axiom);
   for (const ShapeProduction& p : cf.productions) md += line(cf.nonterminals[p.lhs].name, p);
@@ -349,9 +354,7 @@ std::string analysis_text(const AnalysisReport& report) {
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
                      ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>());
-  if (report.context_free.point_cloud)
-    out += fmt::format("context-free rules: {}\n", kPointCloudRules);
-  else if (cf.empty())
+  if (cf.empty())
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit,
                        unpaired_sites_text(report) + dropped_rules_text(report.context_free));
@@ -531,16 +534,29 @@ std::optional<std::filesystem::path> write_rules_picture(const std::filesystem::
   options.exemplar_only = true;
   options.weld_seams = false;
   const ShapeDerivation d = derive_shape(cf, report.grammar.eps, options);
+  const BoundingBox bounds = report.prepared.model.bounds();
+  auto color_of = [](std::size_t nonterminal) {
+    return nonterminal == kNoProduction ? Rgba8{215, 215, 215, 255} : class_color(nonterminal);
+  };
+  if (cf.of_points()) {
+    std::vector<Rgb> point_colors;
+    for (std::size_t n : d.point_nonterminal) {
+      const Rgba8 c = color_of(n);
+      point_colors.push_back({c.r, c.g, c.b});
+    }
+    write_colored_cloud(folder / (stem + ".rules.png"), folder / (stem + ".rules.ply"), d.points, point_colors,
+                        report.grammar.eps, picture_options(bounds, report.grammar.up_axis));
+    return folder / (stem + ".rules.png");
+  }
   std::vector<Rgba8> colors(d.mesh.triangles.size());
   std::vector<Rgb> vertex_colors(d.mesh.positions.size());
   for (std::size_t t = 0; t < colors.size(); ++t) {
-    const std::size_t n = d.triangle_nonterminal[t];
-    colors[t] = n == kNoProduction ? Rgba8{215, 215, 215, 255} : class_color(n);
+    colors[t] = color_of(d.triangle_nonterminal[t]);
     for (std::uint32_t v : d.mesh.triangles[t]) vertex_colors[v] = {colors[t].r, colors[t].g, colors[t].b};
   }
   write_mesh(folder / (stem + ".rules.ply"), d.mesh, &vertex_colors);
   write_mesh_picture(folder / (stem + ".rules.png"), d.mesh, colors, {},
-                     picture_options(report.prepared.model.bounds(), report.grammar.up_axis));
+                     picture_options(bounds, report.grammar.up_axis));
   return folder / (stem + ".rules.png");
 }
 

@@ -52,7 +52,7 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
                                 families_text(report.symmetries, unused.translations, "translation"),
                                 unused.translations.size() == 1 ? "s" : ""));
   const ContextFreeStats& stats = report.context_free;
-  if (!stats.point_cloud && stats.sites_without_fit > 0)
+  if (stats.sites_without_fit > 0)
     items.push_back(fmt::format("{} docking site{} whose docker, cut at one location, lies more than {:g} eps from the seam "
                                 "at the other give{} no context-free production",
                                 stats.sites_without_fit, stats.sites_without_fit == 1 ? "" : "s", kSeamFitFraction,
