@@ -678,9 +678,9 @@ class Builder {
                             {.straighten_open_borders = true, .moved_distance = snap_distance()});
   }
 
-  // Terminal points of `node` (kNone: the whole cloud) without the dockers of `children`, in
-  // model coordinates.
-  PointCloud point_remainder(std::size_t node, const std::vector<std::size_t>& children) {
+  // Indices of the terminal points of `node` (kNone: the whole cloud) without the dockers of
+  // `children`, ascending.
+  std::vector<std::uint32_t> point_remainder(std::size_t node, const std::vector<std::size_t>& children) {
     for (std::size_t c : children)
       for (std::uint32_t p : nodes_[c].piece) taken_[p] = 1;
     std::vector<std::uint32_t> own;
@@ -693,7 +693,7 @@ class Builder {
     }
     for (std::size_t c : children)
       for (std::uint32_t p : nodes_[c].piece) taken_[p] = 0;
-    return subcloud(*cloud_, own);
+    return own;
   }
 
   // The production of `node` (kNone: the axiom) with the given children; children must have
@@ -702,10 +702,12 @@ class Builder {
     ShapeProduction p;
     const RigidTransform to_frame = node == kNone ? RigidTransform{} : nodes_[node].frame.inverse();
     p.lhs = node == kNone ? kNoProduction : class_index_[nodes_[node].klass];
-    if (cloud_)
-      p.terminal_points = transformed(point_remainder(node, children), to_frame);
-    else
+    if (cloud_) {
+      p.terminal_source_points = point_remainder(node, children);
+      p.terminal_points = transformed(subcloud(*cloud_, p.terminal_source_points), to_frame);
+    } else {
       p.terminal = transformed(remainder(node, children), to_frame);
+    }
     p.source_site = node == kNone ? 0 : node;
     p.source_frame = node == kNone ? RigidTransform{} : nodes_[node].frame;
     for (std::size_t c : children)

@@ -62,6 +62,9 @@ struct ShapeProduction {
   std::size_t lhs = kNoProduction;
   TriangleMesh terminal;  ///< in the lhs frame (model frame for the axiom); empty for a point cloud
   PointCloud terminal_points;  ///< a point-cloud exemplar's terminal: its points (with normals when it had them), same frame
+  /// A point cloud's terminal as indices of the exemplar's points: terminal_points is them moved
+  /// by source_frame^-1 (the grammar file stores these instead of the points). Empty for meshes.
+  std::vector<std::uint32_t> terminal_source_points;
   std::vector<ChildSlot> children;
   std::size_t source_site = 0;  ///< exemplar location it was cut from (report only)
   /// From the lhs frame to the model at that location (identity for the axiom); tells how the

@@ -3,11 +3,13 @@
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
+#include "geometry/submesh.h"
 #include "grammar/material_json.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -99,7 +101,27 @@ void add_material_runs(nlohmann::json& object, const char* key, const TriangleMe
   if (!grammar.materials.empty() && mesh.has_materials()) object[key] = material_runs_json(mesh);
 }
 
-// One production: its terminal goes to a sidecar file (none when it has no triangles or points).
+// Writes the exemplar point indices of a point cloud's terminal: little-endian uint32 each.
+void write_point_indices(const std::filesystem::path& path, const std::vector<std::uint32_t>& indices) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    for (std::uint32_t i : indices) {
+      const std::array<char, 4> bytes{static_cast<char>(i & 0xFFu), static_cast<char>((i >> 8) & 0xFFu),
+                                      static_cast<char>((i >> 16) & 0xFFu), static_cast<char>((i >> 24) & 0xFFu)};
+      out.write(bytes.data(), 4);
+    }
+  });
+}
+
+// Whether a point cloud's terminal can be stored as indices of the exemplar's points.
+bool stored_as_indices(const ShapeGrammar& grammar, const ShapeProduction& p) {
+  const std::size_t n = grammar.exemplar_points.positions.size();
+  return p.source_frame && !p.terminal_source_points.empty() &&
+         p.terminal_source_points.size() == p.terminal_points.positions.size() &&
+         std::all_of(p.terminal_source_points.begin(), p.terminal_source_points.end(), [&](std::uint32_t i) { return i < n; });
+}
+
+// One production: its terminal goes to a sidecar file (none when it has no triangles or points):
+// a mesh, or a point cloud's terminal as indices of the exemplar's points (else as points).
 nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProduction& p, const std::filesystem::path& folder,
                                const std::string& file) {
   const ContextFreeGrammar& g = grammar.context_free;
@@ -112,6 +134,10 @@ nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProductio
   if (!p.terminal.triangles.empty()) {
     write_mesh(folder / file, p.terminal);
     terminal = folder.filename().string() + "/" + file;
+  } else if (stored_as_indices(grammar, p)) {
+    const std::string indices = std::filesystem::path(file).replace_extension(".u32").string();
+    write_point_indices(folder / indices, p.terminal_source_points);
+    terminal = folder.filename().string() + "/" + indices;
   } else if (!p.terminal_points.positions.empty()) {
     write_point_cloud(folder / file, p.terminal_points);
     terminal = folder.filename().string() + "/" + file;
@@ -123,6 +149,7 @@ nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProductio
                         {"children", children},
                         {"source_site", p.source_site}};
   if (p.source_frame) out["source_frame"] = matrix_json(p.source_frame->matrix());
+  if (stored_as_indices(grammar, p)) out["terminal_of"] = "exemplar_points";
   add_material_runs(out, "material_runs", p.terminal, grammar);
   return out;
 }
@@ -234,9 +261,9 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
   if (!p.contains("lhs")) throw InputError(where + ": a production has no \"lhs\"");
   if (!p.at("lhs").is_null()) production.lhs = nonterminal(field<std::string>(p, "lhs", where));
   if (!p.contains("terminal")) throw InputError(where + ": a production has no \"terminal\"");
-  if (!p.at("terminal").is_null()) load_terminal(field<std::string>(p, "terminal", where), p, production);
   production.source_site = field<std::size_t>(p, "source_site", where);
   if (p.contains("source_frame")) production.source_frame = matrix_field(p, "source_frame", where);
+  if (!p.at("terminal").is_null()) load_terminal(field<std::string>(p, "terminal", where), p, production);
   for (const nlohmann::json& c : field<nlohmann::json>(p, "children", where)) {
     ChildSlot slot;
     slot.nonterminal = nonterminal(field<std::string>(c, "nonterminal", where));
@@ -248,6 +275,24 @@ ShapeProduction read_production(const nlohmann::json& p, const std::string& wher
     production.children.push_back(slot);
   }
   return production;
+}
+
+// The exemplar point indices of a point cloud's terminal (write_point_indices); each must be
+// below `exemplar_points`.
+std::vector<std::uint32_t> read_point_indices(const std::filesystem::path& file, std::size_t exemplar_points,
+                                              const std::string& where) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(where + ": sidecar point indices " + file.string() + " are missing");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() % 4 != 0) throw InputError(where + ": " + file.string() + " is not a list of 4-byte point indices");
+  std::vector<std::uint32_t> indices(bytes.size() / 4);
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    for (int b = 3; b >= 0; --b) indices[i] = (indices[i] << 8) | static_cast<unsigned char>(bytes[4 * i + static_cast<std::size_t>(b)]);
+    if (indices[i] >= exemplar_points)
+      throw InputError(where + ": " + file.string() + " names point " + std::to_string(indices[i]) + " of an exemplar of " +
+                       std::to_string(exemplar_points));
+  }
+  return indices;
 }
 
 template <class LoadTerminal>
@@ -384,10 +429,18 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     grammar.grids.push_back(std::move(entry));
   }
   auto load_terminal = [&](const std::string& relative, const nlohmann::json& owner, ShapeProduction& production) {
-    if (points)
-      production.terminal_points = load_points(relative);
-    else
+    if (!points) {
       production.terminal = load(relative, owner);
+    } else if (owner.contains("terminal_of")) {
+      if (field<std::string>(owner, "terminal_of", where) != "exemplar_points" || !production.source_frame)
+        throw InputError(where + ": \"terminal_of\" must be \"exemplar_points\", with a source_frame");
+      production.terminal_source_points =
+          read_point_indices(path.parent_path() / relative, grammar.exemplar_points.positions.size(), where);
+      production.terminal_points =
+          transformed(subcloud(grammar.exemplar_points, production.terminal_source_points), production.source_frame->inverse());
+    } else {
+      production.terminal_points = load_points(relative);
+    }
   };
   if (version >= 2) read_context_free(document, version, where, load_terminal, grammar.context_free);
   return grammar;

@@ -16,6 +16,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -118,5 +121,29 @@ TEST_CASE("a point cloud's context-free rules survive the grammar file", "[synth
   dg::ShapeDerivationOptions options;
   options.exemplar_only = true;
   CHECK(rebuilt_like_the_cloud(dg::derive_shape(read.context_free, read.eps, options).points, g));
+  // Terminals are stored as indices of the exemplar's points (4 bytes a point) and come back as
+  // the same points.
+  std::ifstream file(folder / "cloud.grammar.json");
+  const nlohmann::json document = nlohmann::json::parse(file);
+  const nlohmann::json& first = document["productions"][0];
+  CHECK(first["terminal_of"] == "exemplar_points");
+  const std::filesystem::path indices = folder / first["terminal"].get<std::string>();
+  CHECK(indices.extension() == ".u32");
+  CHECK(std::filesystem::file_size(indices) == 4 * g.grammar.productions[0].terminal_points.positions.size());
+  const dg::PointCloud& before = g.grammar.productions[0].terminal_points;
+  const dg::PointCloud& after = read.context_free.productions[0].terminal_points;
+  REQUIRE(after.positions.size() == before.positions.size());
+  double moved = 0.0;
+  for (std::size_t i = 0; i < before.positions.size(); ++i) moved = std::max(moved, (after.positions[i] - before.positions[i]).norm());
+  CHECK(moved < 1e-9 * g.eps);
+  // An index beyond the exemplar is a clear input error.
+  std::ofstream(indices, std::ios::binary | std::ios::app).write("\xff\xff\xff\x7f", 4);
+  CHECK_THROWS_WITH(dg::read_grammar(folder / "cloud.grammar.json"), Catch::Contains("names point"));
+  // Without the indices (a grammar built in code), terminals are written as points.
+  for (dg::ShapeProduction& p : grammar.context_free.productions) p.terminal_source_points.clear();
+  grammar.context_free.axiom.terminal_source_points.clear();
+  dg::write_grammar(folder / "plain.grammar.json", grammar);
+  const dg::ShapeGrammar plain = dg::read_grammar(folder / "plain.grammar.json");
+  CHECK(plain.context_free.productions[0].terminal_points.positions == before.positions);
   std::filesystem::remove_all(folder);
 }
