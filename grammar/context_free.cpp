@@ -10,6 +10,7 @@
 #include "grammar/seam_curve.h"
 #include "grammar/seam_cut.h"
 #include "geometry/random.h"
+#include "geometry/same_surface.h"
 #include "grammar/same_production.h"
 #include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
@@ -379,17 +380,28 @@ class Builder {
   // alternative), loses them all. Returns each class's largest misfit kept.
   template <class CurveOf>
   std::vector<double> keep_fitting_locations(const CurveOf& curve_of, double limit) {
+    // An empty curve never fits: seam_misfit is infinite when the reference has no match.
+    return keep_locations(curve_of, [&](const std::vector<Segment>& curve, const std::vector<Segment>& reference) {
+      return seam_misfit(curve, reference, limit, surface_.eps());
+    }, limit);
+  }
+
+  // keep_fitting_locations for any seam shape: `shape_of(node)` gives what a location's seam
+  // looks like in the non-terminal's frame (nothing fits an empty one), `misfit(shape,
+  // reference shape)` how far it lies from the first location's (model units).
+  template <class ShapeOf, class Misfit>
+  std::vector<double> keep_locations(const ShapeOf& shape_of, const Misfit& misfit_of, double limit) {
     std::vector<double> largest(class_nodes_.size(), 0.0);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       const std::vector<std::size_t>& members = class_nodes_[k];
       const Node& root = nodes_[members.front()];
-      const std::vector<Segment> reference = root.kept ? curve_of(root) : std::vector<Segment>{};
+      using Shape = decltype(shape_of(root));
+      const Shape reference = root.kept ? shape_of(root) : Shape{};
       std::size_t kept = 0;
       for (std::size_t i : members) {
         Node& n = nodes_[i];
         if (n.kept && !reference.empty()) {
-          // An empty curve never fits: seam_misfit is infinite when the reference has no match.
-          const double misfit = i == members.front() ? 0.0 : seam_misfit(curve_of(n), reference, limit, surface_.eps());
+          const double misfit = i == members.front() ? 0.0 : misfit_of(shape_of(n), reference);
           n.kept = misfit <= limit;
           if (n.kept) largest[k] = std::max(largest[k], misfit);
         } else {
@@ -523,8 +535,9 @@ class Builder {
   }
 
   // The docker piece of every kept node of a point cloud: the points in its docker cells and, in
-  // its band cells, those on the docker side of its seam; ascending. Points have no seam curve to
-  // fit, so every location is kept (misfit 0).
+  // its band cells, those on the docker side of its seam; ascending. Points have no seam curve:
+  // a location is kept when its docker's points next to the seam look as the first location's
+  // (the misfit is recorded as 0).
   void point_pieces() {
     std::vector<std::vector<std::uint32_t>> cell_points(surface_.cell_count());
     for (std::uint32_t p = 0; p < cloud_->positions.size(); ++p) {
@@ -544,6 +557,21 @@ class Builder {
       std::sort(n.piece.begin(), n.piece.end());
       n.piece.erase(std::unique(n.piece.begin(), n.piece.end()), n.piece.end());
     }
+    // A docker taken from one location must meet the rest of the model at another as it met it
+    // at its own: the points of each docker within eps of its seam, in the non-terminal's frame,
+    // must sample the same cross-section as the first location's (same_points at eps).
+    const double eps = surface_.eps();
+    auto layer_of = [&](const Node& n) {
+      std::vector<Vec3> layer;
+      for (std::uint32_t p : n.piece) {
+        const Vec3 own = n.frame_inverse.apply(cloud_->positions[p]);
+        if (class_seam_[n.klass].near(own, eps)) layer.push_back(own);
+      }
+      return layer;
+    };
+    keep_locations(layer_of, [&](const std::vector<Vec3>& layer, const std::vector<Vec3>& reference) {
+      return same_points(PointCloud{layer, {}}, PointCloud{reference, {}}, eps) ? 0.0 : std::numeric_limits<double>::infinity();
+    }, 0.0);
     class_misfit_.assign(class_nodes_.size(), 0.0);
   }
 

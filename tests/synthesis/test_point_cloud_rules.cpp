@@ -10,7 +10,9 @@
 #include "geometry/surface_sampling.h"
 #include "grammar/context_free.h"
 #include "grammar/grammar_file.h"
+#include "geometry/model_io.h"
 #include "support/cli_run.h"
+#include "support/corpus.h"
 
 #include <catch2/catch.hpp>
 
@@ -147,3 +149,33 @@ TEST_CASE("a point cloud's context-free rules survive the grammar file", "[synth
   CHECK(plain.context_free.productions[0].terminal_points.positions == before.positions);
   std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("a point cloud drawn on the Kenney metal gate derives variants r-similar to it", "[synthesis][cloud][corpus]") {
+  // Its stakes cross many docking sites; dockers that would meet the rest of the gate otherwise
+  // than at their own location (a long stake swapped for a short tip) are not used.
+  const auto path = dg::test::corpus_file_if_present("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
+  if (!path) return;
+  dg::Model model;
+  model.cloud.positions = dg::sample_surface(dg::read_model(*path).mesh, 300000, 1).positions;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const dg::ContextFreeGrammar grammar =
+      dg::build_context_free_grammar(prepared, dg::find_docking_sites(prepared, symmetries), {});
+  REQUIRE(!grammar.empty());
+  std::size_t changed = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    dg::ShapeDerivationOptions options;
+    options.seed = seed;
+    dg::ShapeDerivation derived = dg::derive_shape(grammar, prepared.surface.eps(), options);
+    if (!derived.changed) continue;
+    ++changed;
+    dg::Model exemplar, candidate;
+    exemplar.cloud = prepared.model.cloud;
+    candidate.cloud = std::move(derived.points);
+    dg::VerifyOptions verify;
+    verify.similarity.samples = 300;
+    CHECK(dg::verify_models(std::move(exemplar), std::move(candidate), verify).pass);
+  }
+  CHECK(changed > 0);
+}
+

@@ -62,7 +62,7 @@ void add_generate_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0, 10000));
   command->add_option("--max-triangles", options->max_triangles,
-                      "Context-free: after this many triangles every slot gets the exemplar's production")
+                      "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's production")
       ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
       ->check(non_negative_number());
