@@ -2,6 +2,7 @@
 
 #include "geometry/errors.h"
 #include "support/shapes.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
@@ -238,8 +239,7 @@ TEST_CASE("a contact sheet shows four views and pictures are written as PNG", "[
   CHECK(blue_row > 80);
   CHECK(red_row > blue_row);
 
-  const auto directory = std::filesystem::temp_directory_path() / "dockgrammar-render-test";
-  std::filesystem::create_directories(directory);
+  const auto directory = dg::test::fresh_folder("dockgrammar-render-test");
   const auto png = directory / "boxes.png";
   dg::write_mesh_picture(png, mesh, colors, {}, options);
   std::ifstream in(png, std::ios::binary);

@@ -14,6 +14,7 @@
 #include "synthesis/shape_derivation.h"
 #include "synthesis/variants.h"
 #include "synthesis/verify.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -179,9 +180,7 @@ TEST_CASE("context-free grammar: fence variants vary in length, stay closed and 
 
 TEST_CASE("context-free grammar survives the grammar file", "[grammar][context_free]") {
   const Analysed a = analyse("fence", {{"n", 4}});
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-cf-file-test";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-cf-file-test");
   const dg::ShapeGrammar grammar = grammar_file_of(a, "fence.obj");
   const auto path = folder / "fence.grammar.json";
   dg::write_grammar(path, grammar);
@@ -615,9 +614,7 @@ TEST_CASE("facade(3x4): voxel-face seams give rules that rebuild the exemplar, v
     for (const dg::ShapeProduction& p : a.grammar.productions) CHECK(inner_vertices(p.terminal) == 0);
   }
   SECTION("voxel-face seams survive the grammar file") {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-cf-voxel-seam-test";
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
+    const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-cf-voxel-seam-test");
     const dg::ShapeGrammar grammar = grammar_file_of(a, "facade.obj");
     dg::write_grammar(folder / "facade.grammar.json", grammar);
     const dg::ShapeGrammar read = dg::read_grammar(folder / "facade.grammar.json");

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace dg::test {
 
@@ -17,7 +18,8 @@ CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder
 }
 
 std::filesystem::path fresh_folder(const std::string& name) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / name;
+  // One folder per test process: test runs of two checkouts at once do not share files.
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   return folder;

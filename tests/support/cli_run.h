@@ -15,7 +15,8 @@ struct CliRun {
 /// Runs `dockgrammar ARGUMENTS` with stdout and stderr captured in FOLDER/log.txt.
 CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder);
 
-/// An empty folder `name` in the system's temporary directory (removed first when present).
+/// An empty folder `name`-PID in the system's temporary directory (removed first when present),
+/// PID being the test process's, so two test runs at once never share a folder.
 std::filesystem::path fresh_folder(const std::string& name);
 
 /// What `dockgrammar analyze` left for the tests: its run and the grammar file it wrote.

@@ -21,9 +21,7 @@ void write(const fs::path& path, const std::string& text) { std::ofstream(path) 
 }  // namespace
 
 TEST_CASE("lsystem derive renders SVG and PNG and reports bad input with exit 2", "[synthesis][cli]") {
-  const fs::path folder = fs::temp_directory_path() / "dockgrammar-lsystem-cli-test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-lsystem-cli-test");
   write(folder / "plant.ls", "axiom: F\nangle: 25.7\nheading: 90\nF -> F[+F]F[-F]F\n");
   write(folder / "broken.ls", "axiom: F\nangle: 25.7\nF -> F[+F(]F\n");
   write(folder / "stochastic.ls", "axiom: F\nangle: 30\nF -> (0.5) F[+F]F\nF -> (0.5) F[-F]F\n");

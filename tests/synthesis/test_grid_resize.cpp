@@ -167,9 +167,7 @@ TEST_CASE("resize spiral stairs(12) to 16 steps gives the generator's stairs(16)
 TEST_CASE("a screw grid survives the grammar file", "[synthesis][grid]") {
   const Grammar g = grammar_of("spiral_stairs", {{"steps", 12}});
   REQUIRE(g.grid.directions.size() == 1);
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-screw-grid";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-screw-grid");
   dg::ShapeGrammar file;
   file.source_name = "spiral_stairs_12";
   file.r = 4 * g.eps;
@@ -196,9 +194,7 @@ TEST_CASE("resize rejects counts out of range and a wrong number of counts", "[s
 
 TEST_CASE("grammar file round trip and bad grammar files", "[synthesis][grid]") {
   const Grammar g = grammar_of("fence", {{"n", 4}});
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "dockgrammar-grammar-test";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grammar-test");
   dg::ShapeGrammar grammar;
   grammar.source_name = "fence_4.obj";
   grammar.source_hash = "0";

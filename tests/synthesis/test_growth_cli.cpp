@@ -24,9 +24,7 @@ void write(const fs::path& path, const std::string& text) { std::ofstream(path) 
 }  // namespace
 
 TEST_CASE("grow renders a scene, reports counts as JSON, regrows after edits, and rejects bad scenes", "[growth][cli]") {
-  const fs::path folder = fs::temp_directory_path() / "dockgrammar-grow-cli-test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-grow-cli-test");
   const std::string scenes = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/scenes/";
 
   dg::test::CliRun ok = grow(scenes + "palm.json -o " + (folder / "palm.svg").string() + " --json", folder);

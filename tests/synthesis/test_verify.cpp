@@ -9,6 +9,7 @@
 #include "geometry/surface_sampling.h"
 #include "support/shapes.h"
 #include "synthesis/r_similarity_index.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -187,9 +188,7 @@ TEST_CASE("verify: touching boxes sharing a vertex do not self-intersect", "[syn
 }
 
 TEST_CASE("verify CLI: exit 0 when valid, 1 when a check fails, 2 for bad input", "[synthesis][verify][cli]") {
-  const fs::path folder = fs::temp_directory_path() / "dockgrammar-verify-cli-test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-verify-cli-test");
   dg::write_mesh(folder / "exemplar.obj", facade_model(3, 4).mesh);
   dg::write_mesh(folder / "large.ply", facade_model(5, 7).mesh);
   dg::write_mesh(folder / "broken.obj", facade_with_scaled_window(1.3).mesh);
