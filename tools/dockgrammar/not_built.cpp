@@ -52,11 +52,15 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
                                 families_text(report.symmetries, unused.translations, "translation"),
                                 unused.translations.size() == 1 ? "s" : ""));
   const ContextFreeStats& stats = report.context_free;
-  if (stats.sites_without_fit > 0)
+  const bool one = stats.sites_without_fit == 1;
+  if (stats.sites_without_fit > 0 && report.prepared.model.is_point_cloud())
+    items.push_back(fmt::format("{} docking site{} whose docker's points next to the seam differ from those at the other "
+                                "location give{} no context-free production",
+                                stats.sites_without_fit, one ? "" : "s", one ? "s" : ""));
+  else if (stats.sites_without_fit > 0)
     items.push_back(fmt::format("{} docking site{} whose docker, cut at one location, lies more than {:g} eps from the seam "
                                 "at the other give{} no context-free production",
-                                stats.sites_without_fit, stats.sites_without_fit == 1 ? "" : "s", kSeamFitFraction,
-                                stats.sites_without_fit == 1 ? "s" : ""));
+                                stats.sites_without_fit, one ? "" : "s", kSeamFitFraction, one ? "s" : ""));
   return items;
 }
 
