@@ -20,6 +20,12 @@ namespace dg {
 std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>* seam_copies = nullptr,
                                 double same_copy_tolerance = 0.0);
 
+/// Closes every hole bounded by exactly three open edges whose perimeter is at most
+/// `max_perimeter` (model units) with one triangle, oriented like its neighbours (material of the
+/// triangle on its first edge). Such slivers are left where a weld joined a seam vertex to a near
+/// neighbour of its partner instead of the partner itself. Returns the number of holes closed.
+std::size_t close_triangular_holes(TriangleMesh& mesh, double max_perimeter);
+
 /// One flag per vertex of `mesh`: 1 when the vertex lies on an open edge (an edge used by one
 /// triangle only). append_seam_labels turns a placed copy's flags into seam labels.
 std::vector<char> open_edge_vertices(const TriangleMesh& mesh);

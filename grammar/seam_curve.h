@@ -26,6 +26,11 @@ inline constexpr double kSeamFitFraction = 1e-2;
 /// Smallest weld distance (fraction of eps) for the seams of derived pieces: float32 rounding.
 inline constexpr double kSeamWeldFloorFraction = 1e-4;
 
+/// Largest perimeter (fraction of eps) of a hole of three open edges that welding a seam may
+/// leave and that is then closed (close_triangular_holes): the Sweet Home 3D railing resized to
+/// no unit left one of 0.2 eps where a bar's seam vertex welded to the handrail's.
+inline constexpr double kSeamHoleFraction = 0.5;
+
 /// Edges between a flagged triangle (`inside`, one flag per triangle) and an unflagged one
 /// (any of them, at an edge that more than two triangles use): the curve along which the flagged
 /// piece was cut from the rest. Edges on the model's own border are not part of it.

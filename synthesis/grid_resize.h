@@ -18,8 +18,9 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
 /// range), welds seam vertices of different copies closer than grid_weld_tolerance
 /// (grammar/grid_seams.h: twice the grid's seam misfit, at least 1e-4 of the voxel size `eps`;
-/// vertices of one copy only within 1e-4 eps, see resolve_t_junctions) and re-triangulates the
-/// flat faces the seams split (merge_flat_faces). Counts equal to the
+/// vertices of one copy only within 1e-4 eps, see resolve_t_junctions), closes the sliver holes
+/// such a weld may leave (three open edges, perimeter up to kSeamHoleFraction eps) and
+/// re-triangulates the flat faces the seams split (merge_flat_faces). Counts equal to the
 /// grid's own counts reproduce the exemplar. Every triangle keeps its piece triangle's material
 /// when all pieces carry materials (the result has none otherwise). Throws InputError when a count is out of range
 /// (below a direction's min_units or the grid's range) or the number of counts does not match

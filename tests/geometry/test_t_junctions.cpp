@@ -1,12 +1,15 @@
-// Closing seams whose sides were triangulated differently (T-junctions), and open-edge flags.
+// Closing seams whose sides were triangulated differently (T-junctions), small holes welds leave,
+// and open-edge flags.
 
 #include "geometry/t_junctions.h"
 
 #include "geometry/topology.h"
+#include "support/shapes.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 
 using dg::Vec3;
 
@@ -149,4 +152,27 @@ TEST_CASE("labelled weld: duplicate vertices of one copy merge within the same-c
   CHECK(edges.boundary_edges == 6);
   CHECK(edges.non_manifold_edges == 0);
   CHECK(mesh.positions.size() == 7);
+}
+
+TEST_CASE("close_triangular_holes fills a small hole of three open edges, oriented like its neighbours", "[geometry]") {
+  dg::TriangleMesh box = dg::test::make_box(dg::Vec3(0, 0, 0), dg::Vec3(1, 1, 1));
+  box.materials.assign(box.triangles.size(), 0);
+  const dg::Triangle missing = box.triangles[5];
+  box.triangles.erase(box.triangles.begin() + 5);
+  box.materials.erase(box.materials.begin() + 5);
+  REQUIRE_FALSE(dg::is_closed_and_oriented(box));
+  // The hole's perimeter is 2 + sqrt(2) = 3.41: a smaller limit leaves it open.
+  dg::TriangleMesh kept = box;
+  CHECK(dg::close_triangular_holes(kept, 3.0) == 0);
+  CHECK(kept.triangles.size() == 11);
+  CHECK(dg::close_triangular_holes(box, 3.5) == 1);
+  REQUIRE(box.triangles.size() == 12);
+  CHECK(dg::is_closed_and_oriented(box));
+  // The same corners as the removed triangle, in an order of the same orientation.
+  std::array<std::uint32_t, 3> added{box.triangles.back()[0], box.triangles.back()[1], box.triangles.back()[2]};
+  while (added[0] != missing[0]) std::rotate(added.begin(), added.begin() + 1, added.end());
+  CHECK(added == std::array<std::uint32_t, 3>{missing[0], missing[1], missing[2]});
+  CHECK(box.materials.size() == 12);
+  // A closed mesh has no hole to close.
+  CHECK(dg::close_triangular_holes(box, 10.0) == 0);
 }
