@@ -138,9 +138,15 @@ TEST_CASE("a point cloud's context-free rules survive the grammar file", "[synth
   double moved = 0.0;
   for (std::size_t i = 0; i < before.positions.size(); ++i) moved = std::max(moved, (after.positions[i] - before.positions[i]).norm());
   CHECK(moved < 1e-9 * g.eps);
-  // An index beyond the exemplar is a clear input error.
+  // Broken index sidecars and a missing frame are clear input errors.
   std::ofstream(indices, std::ios::binary | std::ios::app).write("\xff\xff\xff\x7f", 4);
   CHECK_THROWS_WITH(dg::read_grammar(folder / "cloud.grammar.json"), Catch::Contains("names point"));
+  std::ofstream(indices, std::ios::binary | std::ios::app).write("\x01", 1);
+  CHECK_THROWS_WITH(dg::read_grammar(folder / "cloud.grammar.json"), Catch::Contains("not a list of 4-byte point indices"));
+  nlohmann::json frameless = document;
+  frameless["productions"][0].erase("source_frame");
+  std::ofstream(folder / "frameless.grammar.json") << frameless.dump();
+  CHECK_THROWS_WITH(dg::read_grammar(folder / "frameless.grammar.json"), Catch::Contains("with a source_frame"));
   // Without the indices (a grammar built in code), terminals are written as points.
   for (dg::ShapeProduction& p : grammar.context_free.productions) p.terminal_source_points.clear();
   grammar.context_free.axiom.terminal_source_points.clear();
