@@ -214,24 +214,26 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
 }
 
 std::size_t close_triangular_holes(TriangleMesh& mesh, double max_perimeter) {
-  // Directed edges: an open edge is one whose reverse no triangle uses and that only one uses.
+  // Directed edges with how many triangles use them and one that does: an open edge is one only
+  // one triangle uses and whose reverse none uses.
+  struct EdgeUses {
+    std::uint32_t count = 0, triangle = 0;
+  };
   auto key = [](std::uint32_t a, std::uint32_t b) { return (static_cast<std::uint64_t>(a) << 32) | b; };
-  std::unordered_map<std::uint64_t, std::uint32_t> uses;            // directed edge -> triangles using it
-  std::unordered_map<std::uint64_t, std::uint32_t> owner;           // directed edge -> a triangle using it
+  std::unordered_map<std::uint64_t, EdgeUses> uses;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const std::uint64_t e = key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
-      ++uses[e];
-      owner.emplace(e, t);
+      EdgeUses& edge = uses[key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])];
+      if (edge.count++ == 0) edge.triangle = t;
     }
   auto open = [&](std::uint32_t a, std::uint32_t b) {
     const auto forward = uses.find(key(a, b));
-    return forward != uses.end() && forward->second == 1 && !uses.contains(key(b, a));
+    return forward != uses.end() && forward->second.count == 1 && !uses.contains(key(b, a));
   };
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> next;  // open edges a -> b
-  for (const auto& [e, count] : uses) {
+  for (const auto& [e, edge] : uses) {
     const auto a = static_cast<std::uint32_t>(e >> 32), b = static_cast<std::uint32_t>(e & 0xFFFFFFFFu);
-    if (count == 1 && open(a, b)) next[a].push_back(b);
+    if (open(a, b)) next[a].push_back(b);
   }
   std::vector<std::array<std::uint32_t, 3>> holes;  // open edges a -> b -> c -> a, a the smallest index
   for (const auto& [a, targets] : next)
@@ -247,7 +249,7 @@ std::size_t close_triangular_holes(TriangleMesh& mesh, double max_perimeter) {
   for (const auto& [a, b, c] : holes) {
     const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
     if ((pb - pa).norm() + (pc - pb).norm() + (pa - pc).norm() > max_perimeter) continue;
-    if (has_materials) mesh.materials.push_back(mesh.materials[owner.at(key(a, b))]);
+    if (has_materials) mesh.materials.push_back(mesh.materials[uses.at(key(a, b)).triangle]);
     mesh.triangles.push_back({b, a, c});  // uses b -> a, a -> c, c -> b: the open edges reversed
     ++closed;
   }

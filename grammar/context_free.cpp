@@ -537,17 +537,13 @@ class Builder {
   // The docker piece of every kept node of a point cloud: the points in its docker cells and, in
   // its band cells, those on the docker side of its seam; ascending. Points have no seam curve:
   // a location is kept when its docker's points next to the seam look as the first location's
-  // (the misfit is recorded as 0).
+  // (seam_layer; the misfit is recorded as 0).
   void point_pieces() {
     std::vector<std::vector<std::uint32_t>> cell_points(surface_.cell_count());
     for (std::uint32_t p = 0; p < cloud_->positions.size(); ++p) {
       const std::int64_t cell = nearest_cell(surface_, cloud_->positions[p]);
       if (cell >= 0) cell_points[static_cast<std::size_t>(cell)].push_back(p);
     }
-    // A docker taken from one location must meet the rest of the model at another as it met it
-    // at its own: the docker's points within eps of its seam (its layer), in the non-terminal's
-    // frame, must sample the same cross-section as the first location's (same_points at eps).
-    const double eps = surface_.eps();
     std::vector<std::vector<Vec3>> layers(nodes_.size());
     const double total = static_cast<double>(std::max<std::size_t>(1, kept_nodes()));
     std::size_t done = 0;
@@ -555,43 +551,53 @@ class Builder {
       Node& n = nodes_[i];
       if (!n.kept) continue;
       report(0.9 * static_cast<double>(done++) / total);
-      const SeamSurface& seam = class_seam_[n.klass];
       for (std::uint32_t c : n.docker) n.piece.insert(n.piece.end(), cell_points[c].begin(), cell_points[c].end());
       for (std::uint32_t c : n.site)
-        for (std::uint32_t p : cell_points[c]) {
-          if (!on_docker_side(seam, surface_, class_docker_side_[n.klass], n.frame_inverse, cloud_->positions[p])) continue;
-          n.piece.push_back(p);
-          const Vec3 own = n.frame_inverse.apply(cloud_->positions[p]);
-          if (seam.near(own, eps)) layers[i].push_back(own);
-        }
-      // Docker cells whose cube may come within eps of the seam: along a plane seam anywhere in
-      // the docker (the plane reaches past the band), next to a band cell for voxel faces.
-      const double cell_reach = eps * (1.0 + 0.5 * std::sqrt(3.0));
-      std::vector<std::uint32_t> near_cells;
-      if (seam.kind == SeamSurface::Kind::plane) {
-        for (std::uint32_t c : n.docker)
-          if (seam.near(n.frame_inverse.apply(surface_.centre(c)), cell_reach)) near_cells.push_back(c);
-      } else {
-        for (std::uint32_t c : n.site)
-          for (std::uint32_t neighbour : surface_.neighbours(c))
-            if (std::binary_search(n.docker.begin(), n.docker.end(), neighbour)) near_cells.push_back(neighbour);
-        std::sort(near_cells.begin(), near_cells.end());
-        near_cells.erase(std::unique(near_cells.begin(), near_cells.end()), near_cells.end());
-      }
-      for (std::uint32_t c : near_cells) {
-        for (std::uint32_t p : cell_points[c]) {
-          const Vec3 own = n.frame_inverse.apply(cloud_->positions[p]);
-          if (seam.near(own, eps)) layers[i].push_back(own);
-        }
-      }
+        for (std::uint32_t p : cell_points[c])
+          if (on_docker_side(class_seam_[n.klass], surface_, class_docker_side_[n.klass], n.frame_inverse, cloud_->positions[p]))
+            n.piece.push_back(p);
       std::sort(n.piece.begin(), n.piece.end());
       n.piece.erase(std::unique(n.piece.begin(), n.piece.end()), n.piece.end());
+      layers[i] = seam_layer(n, cell_points);
     }
-    auto layer_of = [&](const Node& n) { return layers[static_cast<std::size_t>(&n - nodes_.data())]; };
-    keep_locations(layer_of, [&](const std::vector<Vec3>& layer, const std::vector<Vec3>& reference) {
-      return same_points(PointCloud{layer, {}}, PointCloud{reference, {}}, eps) ? 0.0 : std::numeric_limits<double>::infinity();
-    }, 0.0);
+    const double eps = surface_.eps();
+    keep_locations([&](const Node& n) { return layers[static_cast<std::size_t>(&n - nodes_.data())]; },
+                   [&](const std::vector<Vec3>& layer, const std::vector<Vec3>& reference) {
+                     return same_points(PointCloud{layer, {}}, PointCloud{reference, {}}, eps) ? 0.0
+                                                                                              : std::numeric_limits<double>::infinity();
+                   },
+                   0.0);
     class_misfit_.assign(class_nodes_.size(), 0.0);
+  }
+
+  // The points of `n`'s docker piece within eps of its seam, in the non-terminal's frame: where
+  // the docker meets the rest of the model. A docker taken from one location fits another when
+  // the two layers sample the same cross-section. Only cells whose cube can reach the seam are
+  // looked at: band cells, and docker cells near a plane seam (it reaches past the band) or next
+  // to a band cell (voxel faces lie in the band).
+  std::vector<Vec3> seam_layer(const Node& n, const std::vector<std::vector<std::uint32_t>>& cell_points) const {
+    const double eps = surface_.eps();
+    const double cell_reach = eps * (1.0 + 0.5 * std::sqrt(3.0));
+    const SeamSurface& seam = class_seam_[n.klass];
+    std::vector<std::uint32_t> cells = n.site;
+    if (seam.kind == SeamSurface::Kind::plane) {
+      for (std::uint32_t c : n.docker)
+        if (seam.near(n.frame_inverse.apply(surface_.centre(c)), cell_reach)) cells.push_back(c);
+    } else {
+      for (std::uint32_t c : n.site)
+        for (std::uint32_t neighbour : surface_.neighbours(c))
+          if (std::binary_search(n.docker.begin(), n.docker.end(), neighbour)) cells.push_back(neighbour);
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<Vec3> layer;
+    for (std::uint32_t c : cells)
+      for (std::uint32_t p : cell_points[c]) {
+        if (!std::binary_search(n.piece.begin(), n.piece.end(), p)) continue;  // a band point beyond the seam
+        const Vec3 own = n.frame_inverse.apply(cloud_->positions[p]);
+        if (seam.near(own, eps)) layer.push_back(own);
+      }
+    return layer;
   }
 
   // A docker cut at one location must fit the hole of every other location: the seam curve of

@@ -2,6 +2,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/flat_faces.h"
+#include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 #include "grammar/seam_curve.h"
 
@@ -88,14 +89,10 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
 
 PointCloud resize_grid_points(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
   check_counts(grid, counts);
-  const bool normals = std::all_of(pieces.begin(), pieces.end(), [](const GridPiece& piece) { return piece.points.has_normals(); });
   PointCloud result;
   for (const GridPiece& piece : pieces)
-    for (const RigidTransform& placement : piece_placements(grid, piece, counts)) {
-      for (const Vec3& position : piece.points.positions) result.positions.push_back(placement.apply(position));
-      if (normals)
-        for (const Vec3& normal : piece.points.normals) result.normals.push_back(placement.rotation * normal);
-    }
+    for (const RigidTransform& placement : piece_placements(grid, piece, counts))
+      append_points(result, transformed(piece.points, placement));
   return result;
 }
 

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 namespace {
 
 dg::TriangleMesh facade() { return dg::assets::make_asset("facade", {{"columns", 2}, {"rows", 3}}).mesh; }
@@ -24,19 +26,24 @@ TEST_CASE("same_surface: a mesh moved within the tolerance is the same, moved fa
   CHECK_FALSE(dg::same_surface(mesh, dg::transformed(mesh, shift(5.0 * tolerance)), tolerance));
 }
 
-TEST_CASE("same_points: two samplings of one surface are the same, a cloud missing a window is not", "[geometry]") {
+TEST_CASE("same_points: two samplings of one surface are the same, a cloud with a hole is not", "[geometry]") {
   const dg::TriangleMesh mesh = facade();
   const double tolerance = 0.05;
   const dg::PointCloud a = dg::sample_surface(mesh, 200000, 1), b = dg::sample_surface(mesh, 200000, 2);
   CHECK(dg::same_points(a, b, tolerance));
   CHECK_FALSE(dg::same_points(a, dg::transformed(b, shift(5.0 * tolerance)), tolerance));
-  // Without the points in front of the wall (the window frames and sills stand out of it).
-  const double front = a.bounds().max.y();
-  dg::PointCloud flat;
+  // With a hole of 1 x 1 model units in the middle: the same bounding box, but cells of one are
+  // uncovered by the other.
+  const dg::BoundingBox box = a.bounds();
+  const dg::Vec3 middle = 0.5 * (box.min + box.max);
+  dg::PointCloud holed;
   for (const dg::Vec3& p : a.positions)
-    if (p.y() < front - 2.0 * tolerance) flat.positions.push_back(p);
-  REQUIRE(flat.positions.size() < a.positions.size());
-  CHECK_FALSE(dg::same_points(a, flat, tolerance));
+    if (std::abs(p.x() - middle.x()) > 0.5 || std::abs(p.z() - middle.z()) > 0.5) holed.positions.push_back(p);
+  REQUIRE(holed.positions.size() < a.positions.size());
+  REQUIRE((holed.bounds().min - box.min).norm() < tolerance);
+  REQUIRE((holed.bounds().max - box.max).norm() < tolerance);
+  CHECK_FALSE(dg::same_points(a, holed, tolerance));
+  CHECK_FALSE(dg::same_points(holed, a, tolerance));
   CHECK(dg::same_points(dg::PointCloud{}, dg::PointCloud{}, tolerance));
   CHECK_FALSE(dg::same_points(a, dg::PointCloud{}, tolerance));
 }
