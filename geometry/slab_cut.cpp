@@ -1,6 +1,9 @@
 #include "geometry/slab_cut.h"
 
+#include "geometry/submesh.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -107,6 +110,51 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
   const auto [a, b, c] = mesh.corners(t);
   const double s = direction.dot((a + b + c) / 3.0);
   return static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), s) - cuts.begin());
+}
+
+double triangle_area_below(double s0, double s1, double s2, double area, double s) {
+  // Quadratic in s on each side of s1.
+  if (s <= s0) return 0.0;
+  if (s >= s2) return area;
+  if (s <= s1) return area * (s - s0) * (s - s0) / ((s1 - s0) * (s2 - s0));
+  return area * (1.0 - (s2 - s) * (s2 - s) / ((s2 - s0) * (s2 - s1)));
+}
+
+namespace {
+
+// Positions of a triangle's corners along `direction`, ascending.
+std::array<double, 3> sorted_positions(const TriangleMesh& mesh, std::size_t t, const Vec3& direction) {
+  const auto [a, b, c] = mesh.corners(t);
+  std::array<double, 3> s{direction.dot(a), direction.dot(b), direction.dot(c)};
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+}  // namespace
+
+double area_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi) {
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::array<double, 3> s = sorted_positions(mesh, t, direction);
+    if (s[2] <= lo || s[0] >= hi) continue;
+    const double whole = 0.5 * mesh.area_vector(t).norm();
+    area += triangle_area_below(s[0], s[1], s[2], whole, hi) - triangle_area_below(s[0], s[1], s[2], whole, lo);
+  }
+  return area;
+}
+
+TriangleMesh mesh_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi, double tolerance) {
+  std::vector<std::size_t> reaching;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::array<double, 3> s = sorted_positions(mesh, t, direction);
+    if (s[2] > lo && s[0] < hi) reaching.push_back(t);
+  }
+  const std::vector<double> cuts{lo, hi};
+  const TriangleMesh cut = cut_along_planes(submesh(mesh, reaching), direction, cuts, tolerance);
+  std::vector<std::size_t> inside;
+  for (std::size_t t = 0; t < cut.triangles.size(); ++t)
+    if (slab_of(cut, t, direction, cuts) == 1) inside.push_back(t);
+  return submesh(cut, inside);
 }
 
 void drop_repeated_corners(TriangleMesh& mesh) {

@@ -22,6 +22,17 @@ TriangleMesh cut_along_planes(const TriangleMesh& mesh, const Vec3& direction, c
 /// i between cuts[i-1] and cuts[i], cuts.size() above the last (cuts ascending).
 std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& direction, const std::vector<double>& cuts);
 
+/// Area on the side direction . x <= s of the plane at s of a triangle with area `area` whose
+/// corners lie at positions s0 <= s1 <= s2 along the direction (model units).
+double triangle_area_below(double s0, double s1, double s2, double area, double s);
+
+/// Surface area of `mesh` between the planes direction . x = lo and = hi (direction unit, lo <= hi).
+double area_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi);
+
+/// The triangles of `mesh` between the planes direction . x = lo and = hi, cut along both
+/// (vertices within `tolerance` of a plane moved onto it), with their materials.
+TriangleMesh mesh_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi, double tolerance);
+
 /// Drops the triangles of `mesh` with a repeated corner (index); the others keep their order
 /// and materials.
 void drop_repeated_corners(TriangleMesh& mesh);

@@ -1,6 +1,8 @@
 #include "grammar/grid_rules.h"
 
 #include "grammar/asymmetric_spans.h"
+#include "grammar/grid_end_units.h"
+#include "grammar/sliding_units.h"
 #include "grammar/whole_parts.h"
 #include "geometry/flat_faces.h"
 #include "geometry/fragment_merge.h"
@@ -84,15 +86,6 @@ class SlabCells {
 // Relative difference of surface area below which two slabs count as equally large.
 constexpr double kSameSlabArea = 1e-4;
 
-// Area of triangle (s0 <= s1 <= s2: its corners' positions along a direction, `area` its
-// area) on the side s' <= s of the plane at s: quadratic in s on each side of s1.
-double area_below(double s0, double s1, double s2, double area, double s) {
-  if (s <= s0) return 0.0;
-  if (s >= s2) return area;
-  if (s <= s1) return area * (s - s0) * (s - s0) / ((s1 - s0) * (s2 - s0));
-  return area * (1.0 - (s2 - s) * (s2 - s) / ((s2 - s0) * (s2 - s1)));
-}
-
 // Surface area of `mesh` in each unit slab of `direction`: entry k - 1 for slab k = 1 .. count,
 // between the planes cut + (k - 1) pitch and cut + k pitch (model units^2).
 std::vector<double> unit_slab_areas(const TriangleMesh& mesh, const GridDirection& direction) {
@@ -107,7 +100,7 @@ std::vector<double> unit_slab_areas(const TriangleMesh& mesh, const GridDirectio
     const int last = std::min(direction.count, static_cast<int>(std::floor((s[2] - direction.cut) / direction.pitch)) + 1);
     for (int k = first; k <= last; ++k) {
       const double lo = direction.cut + (k - 1) * direction.pitch, hi = lo + direction.pitch;
-      areas[static_cast<std::size_t>(k - 1)] += area_below(s[0], s[1], s[2], area, hi) - area_below(s[0], s[1], s[2], area, lo);
+      areas[static_cast<std::size_t>(k - 1)] += triangle_area_below(s[0], s[1], s[2], area, hi) - triangle_area_below(s[0], s[1], s[2], area, lo);
     }
   }
   return areas;
@@ -150,8 +143,9 @@ bool spans_pitches(const BoundingBox& bounds, const Vec3& t, int pitches) {
 // The best chain of cut planes for one translation or screw motion: the longest run of planes,
 // each crossing only r-symmetric cells (the last only images of them; the first also symmetric
 // cells whose nearby asymmetry lies on one side of it) and none holding a face, whose slabs are
-// symmetric. A screw moves every plane across its axis by its slide along the axis, so its
-// planes are those perpendicular to the axis, `slide` apart.
+// symmetric, and (meshes) whose unit is no extrusion that only slides along itself. A screw
+// moves every plane across its axis by its slide along the axis, so its planes are those
+// perpendicular to the axis, `slide` apart.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
                                             std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry) {
   const VoxelSurface& surface = prepared.surface;
@@ -258,56 +252,74 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     return it != face_planes.end() && *it <= plane + in_plane;
   };
 
-  std::optional<GridDirection> best;
-  double best_clearance = -1.0;
-  int best_vertices = -1;
-  std::size_t best_crossed = 0;
+  // The best chain whose first unit lies outside every range in `sliding`.
   const double wanted_clearance = surface.r();
-  for (const auto& [phase, vertices] : phases) {
-    // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
-    for (double first = lowest + phase; first <= highest; first += pitch) {
-      // Not a run start: blocked, or the run from the plane before includes this one.
-      if (first_plane.contains(first) ||
-          (first - pitch >= lowest && !first_plane.contains(first - pitch) && !forward.contains(first)))
-        continue;
-      int count = 1;
-      while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
-      // The plane after the last unit must lie in the image of the r-symmetric area.
-      while (count > 0 && backward.contains(first + count * pitch)) --count;
-      // Every slab but the last maps onto the next.
-      for (int k = 0; k + 1 < count; ++k)
-        if (!slabs_repeat(first + k * pitch, 1)) {
-          count = k + 1;
-          break;
+  auto best_chain = [&](const std::vector<std::pair<double, double>>& sliding) {
+    auto excluded = [&](double first) {
+      return std::any_of(sliding.begin(), sliding.end(),
+                         [&](const auto& range) { return first < range.second && first + pitch > range.first; });
+    };
+    std::optional<GridDirection> best;
+    double best_clearance = -1.0;
+    int best_vertices = -1;
+    std::size_t best_crossed = 0;
+    for (const auto& [phase, vertices] : phases) {
+      // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
+      for (double first = lowest + phase; first <= highest; first += pitch) {
+        // Not a run start: blocked, or the run from the plane before includes this one.
+        if (first_plane.contains(first) || excluded(first) ||
+            (first - pitch >= lowest && !first_plane.contains(first - pitch) && !forward.contains(first) && !excluded(first - pitch)))
+          continue;
+        int count = 1;
+        while (!forward.contains(first + count * pitch) && first + count * pitch <= highest) ++count;
+        // The plane after the last unit must lie in the image of the r-symmetric area.
+        while (count > 0 && backward.contains(first + count * pitch)) --count;
+        // Every slab but the last maps onto the next.
+        for (int k = 0; k + 1 < count; ++k)
+          if (!slabs_repeat(first + k * pitch, 1)) {
+            count = k + 1;
+            break;
+          }
+        if (count < min_repeats) continue;
+        bool on_face = false;
+        for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
+        if (on_face) continue;
+        double clearance = wanted_clearance;
+        clearance = std::min(clearance, first_plane.clearance(first));
+        for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
+        clearance = std::min(clearance, backward.clearance(first + count * pitch));
+        // Ranking: more units; then more clearance (beyond rounding); then the smallest seams (fewest
+        // surface cells crossed by the planes); then planes through more existing vertices.
+        std::size_t crossed = 0;
+        for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
+        auto better = [&] {
+          if (!best || count != best->count) return !best || count > best->count;
+          if (std::abs(clearance - best_clearance) > 1e-12) return clearance > best_clearance;
+          if (crossed != best_crossed) return crossed < best_crossed;
+          return vertices > best_vertices;
+        };
+        if (better()) {
+          // A translation's generator is kept exact (no rotation noise from the detector's fit).
+          const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
+          best = GridDirection{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
+                               .symmetry = symmetry_index};
+          best_clearance = clearance;
+          best_vertices = vertices;
+          best_crossed = crossed;
         }
-      if (count < min_repeats) continue;
-      bool on_face = false;
-      for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
-      if (on_face) continue;
-      double clearance = wanted_clearance;
-      clearance = std::min(clearance, first_plane.clearance(first));
-      for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
-      clearance = std::min(clearance, backward.clearance(first + count * pitch));
-      // Ranking: more units; then more clearance (beyond rounding); then the smallest seams (fewest
-      // surface cells crossed by the planes); then planes through more existing vertices.
-      std::size_t crossed = 0;
-      for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-      auto better = [&] {
-        if (!best || count != best->count) return !best || count > best->count;
-        if (std::abs(clearance - best_clearance) > 1e-12) return clearance > best_clearance;
-        if (crossed != best_crossed) return crossed < best_crossed;
-        return vertices > best_vertices;
-      };
-      if (better()) {
-        // A translation's generator is kept exact (no rotation noise from the detector's fit).
-        const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-        best = GridDirection{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
-                             .symmetry = symmetry_index};
-        best_clearance = clearance;
-        best_vertices = vertices;
-        best_crossed = crossed;
       }
     }
+    return best;
+  };
+  // An extrusion cut at the pitch (a corridor reaching out of a map) is no row of units: its
+  // chain is left out and the next best taken, a few times at most.
+  constexpr int kSlidingChainsTried = 4;
+  std::vector<std::pair<double, double>> sliding;
+  std::optional<GridDirection> best = best_chain(sliding);
+  while (best && !points && unit_only_slides(mesh, *best)) {
+    if (static_cast<int>(sliding.size()) + 1 >= kSlidingChainsTried) return std::nullopt;
+    sliding.emplace_back(best->cut, best->cut + best->count * pitch);
+    best = best_chain(sliding);
   }
   if (best) choose_repeated_unit(*best, slab_cells, half, mesh);
   return best;
@@ -525,6 +537,13 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
                                  const GridOptions& options, const ProgressCallback& progress) {
   std::vector<GridRule> grids;
   std::vector<GridDirection> translations, screws;
+  // Units near the model's ends that no plane may reach (r-erosion) count when they are copies (a
+  // point cloud's sampling cannot tell a copy from a slab shifted by less than eps).
+  // Slabs are copies within the cells' offset tolerance the symmetries were found with.
+  const double tolerance = symmetries.region.offset_tolerance_eps * prepared.surface.eps();
+  auto count_units_beyond_planes = [&](GridDirection& direction) {
+    if (!prepared.model.is_point_cloud()) count_end_units(direction, prepared.model.mesh, tolerance);
+  };
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
   // Families are independent: examined in parallel and joined in family order.
   const std::size_t family_count = symmetries.families.size();
@@ -535,7 +554,10 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     for (std::size_t m : members_by_power(family)) {
       found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
                                 options.max_slab_asymmetry);
-      if (found[f]) return;
+      if (found[f]) {
+        count_units_beyond_planes(*found[f]);
+        return;
+      }
     }
   });
   for (std::size_t f = 0; f < family_count; ++f) {
@@ -574,8 +596,10 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     if (grid.directions.empty() || grid.directions.size() >= 3 ||
         !independent_of(symmetries.symmetries[s].transform.translation, grid.directions))
       continue;
-    if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry))
-      grid.directions.push_back(*direction);
+    if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry)) {
+      count_units_beyond_planes(*direction);
+      grid.directions.push_back(std::move(*direction));
+    }
   }
   // No translation cuts across the whole model: a row of parts may, keeping other parts whole
   // (a mesh's connected components; a point cloud has none).

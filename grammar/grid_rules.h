@@ -35,7 +35,8 @@ struct GridDirection {
   int count = 0;                    ///< repeated units in the exemplar
   /// Units of the exemplar kept in the head piece (before the repeated one) and in the tail piece
   /// (after the last copy) because they differ a little from their neighbours (damage such as a
-  /// fin, an end stake): they are placed once, never copied. The repeated unit is slab
+  /// fin, an end stake) or lie within r of the model's ends, where no plane may cut
+  /// (grammar/grid_end_units.h): they are placed once, never copied. The repeated unit is slab
   /// head_units + 1; a resize places it count - head_units - tail_units times.
   int head_units = 0;
   int tail_units = 0;
@@ -85,7 +86,10 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// further 1-grid. Rotations (no slide) give none. When no translation gives a direction, the
 /// translation with the most units whose planes cut all but some separate parts kept whole
 /// (grammar/whole_parts.h) gives a 1-grid, if one of its units holds a whole part that no plane
-/// cuts (a row of parts, not only walls and rails sliding along themselves). Families are examined
+/// cuts (a row of parts, not only walls and rails sliding along themselves). A mesh's chain of
+/// planes whose unit only slides along itself (grammar/sliding_units.h) gives way to the next best
+/// chain, and copies of the unit beyond the first and last plane join the count
+/// (grammar/grid_end_units.h). Families are examined
 /// in parallel; the result does not depend on the thread count. `progress` hears stage "grid
 /// rules" with the fraction of repetition families examined (after each parallel batch), then 1.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,

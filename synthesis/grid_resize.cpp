@@ -25,7 +25,7 @@ void check_counts(const GridRule& grid, const std::vector<int>& counts) {
                                    counts[i], i + 1, lowest, grid.max_count,
                                    lowest > grid.min_count
                                        ? fmt::format(" (the exemplar's head and tail keep {} unit{} that differ a little "
-                                                     "from the repeated one)",
+                                                     "from the repeated one or lie where no plane may cut)",
                                                      min_units(grid.directions[i]), min_units(grid.directions[i]) == 1 ? "" : "s")
                                        : ""));
   }

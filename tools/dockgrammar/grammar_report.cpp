@@ -84,14 +84,16 @@ std::string dropped_rules_text(const ContextFreeStats& stats) {
 }
 
 // A note on the units a direction keeps once in its head and tail, e.g. " (1 unit kept once in
-// the head: it differs a little from the repeated unit)"; empty when it keeps none.
+// the head: it differs a little from the repeated unit or lies where no plane may cut)"; empty
+// when it keeps none.
 std::string kept_units_text(const GridDirection& d) {
   if (min_units(d) == 0) return "";
   auto units = [](int n) { return fmt::format("{} unit{}", n, n == 1 ? "" : "s"); };
   std::string kept;
   if (d.head_units > 0) kept = units(d.head_units) + " kept once in the head";
   if (d.tail_units > 0) kept += kept.empty() ? units(d.tail_units) + " kept once in the tail" : fmt::format(" and {} in the tail", d.tail_units);
-  return fmt::format(" ({}: {} a little from the repeated unit)", kept, min_units(d) == 1 ? "it differs" : "they differ");
+  return fmt::format(" ({}: {} a little from the repeated unit or {} within r of the model's ends, where no plane may cut)",
+                     kept, min_units(d) == 1 ? "it differs" : "they differ", min_units(d) == 1 ? "lies" : "lie");
 }
 
 // Separate parts (vertex-connected components of `mesh`) among the listed triangles.

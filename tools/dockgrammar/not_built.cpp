@@ -48,7 +48,7 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
   if (!unused.translations.empty())
     items.push_back(fmt::format("{} give{} no grid: grid planes cross the whole model but for separate parts kept whole, "
                                 "and no such planes cut it into slabs that repeat (geometry that does not repeat with "
-                                "the units lies across them)",
+                                "the units lies across them, or the slabs are an extrusion that only slides along itself)",
                                 families_text(report.symmetries, unused.translations, "translation"),
                                 unused.translations.size() == 1 ? "s" : ""));
   const ContextFreeStats& stats = report.context_free;

@@ -1,0 +1,19 @@
+#pragma once
+// Units of a grid direction that lie beyond its cut planes: copies of the repeated unit near the
+// model's ends, where the symmetric area is eroded by r, so no cut plane may cross it.
+
+#include "grammar/grid_rules.h"
+
+namespace dg {
+
+/// Extends `direction` (found on `mesh`, a triangle mesh) by the copies of the unit that lie
+/// before its first plane and after its last: while the slab one pitch before the first plane,
+/// moved by the direction's motion, is the same surface as the slab after it within `tolerance`
+/// (model units; geometry/same_surface.h) and has the same area (relative 1e-4, so a hidden second
+/// layer of faces counts), the first plane moves back one pitch and the slab joins the count as a
+/// unit kept in the head; likewise after the last plane for the tail. Resizing to the new count
+/// still gives the exemplar (head and tail pieces are unchanged), and each further unit adds one
+/// copy of the repeated unit. Returns the units added.
+int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance);
+
+}  // namespace dg
