@@ -133,6 +133,10 @@ void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells,
   direction.tail_units = direction.count - (best_last + 1);
 }
 
+// Chains with the most units between planes whose copies beyond the planes are counted (in the
+// order of the rest of the ranking) when the best of them has any.
+constexpr std::size_t kLongestChainsCounted = 16;
+
 // Whether the model spans `pitches` times the translation t (bounded by its bounding box): every
 // plane crosses the model, so that many units need that much extent along t. A cheap rejection
 // of large powers of short motions.
@@ -143,11 +147,14 @@ bool spans_pitches(const BoundingBox& bounds, const Vec3& t, int pitches) {
 // The best chain of cut planes for one translation or screw motion: the longest run of planes,
 // each crossing only r-symmetric cells (the last only images of them; the first also symmetric
 // cells whose nearby asymmetry lies on one side of it) and none holding a face, whose slabs are
-// symmetric, and (meshes) whose unit is no extrusion that only slides along itself. A screw
-// moves every plane across its axis by its slide along the axis, so its planes are those
-// perpendicular to the axis, `slide` apart.
+// symmetric, and (meshes) whose unit is no extrusion that only slides along itself. With a
+// positive `copy_tolerance` (model units; meshes only) the copies of the unit beyond the first
+// and last plane join the count (grammar/grid_end_units.h). A screw moves every plane across its
+// axis by its slide along the axis, so its planes are those perpendicular to the axis, `slide`
+// apart.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
-                                            std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry) {
+                                            std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry,
+                                            double copy_tolerance) {
   const VoxelSurface& surface = prepared.surface;
   const ScrewParameters screw = screw_parameters(symmetry.transform);
   const Vec3 t = symmetry.kind == "translation" ? symmetry.transform.translation : screw.slide * screw.axis;
@@ -252,17 +259,36 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     return it != face_planes.end() && *it <= plane + in_plane;
   };
 
-  // The best chain whose first unit lies outside every range in `sliding`.
+  // A translation's generator is kept exact (no rotation noise from the detector's fit).
+  const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
+  // The chain starting at `first` with `count` units, its repeated unit chosen and (with a copy
+  // tolerance) the copies beyond its planes counted.
+  auto settled = [&](double first, int count) {
+    GridDirection direction{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
+                            .symmetry = symmetry_index};
+    choose_repeated_unit(direction, slab_cells, half, mesh);
+    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance);
+    return direction;
+  };
+  // The best chain whose first unit lies outside every range in `sliding`. Ranking: more units
+  // between planes; then, when the best by the rest counts copies beyond its planes (the phase
+  // decides whether whole copies remain at the ends), more units in all; then more clearance
+  // (beyond rounding); then the smallest seams (fewest surface cells crossed by the planes); then
+  // planes through more existing vertices.
   const double wanted_clearance = surface.r();
-  auto best_chain = [&](const std::vector<std::pair<double, double>>& sliding) {
+  struct Chain {
+    double first = 0.0;
+    int count = 0;
+    double clearance = -1.0;
+    std::size_t crossed = 0;
+    int vertices = 0;
+  };
+  auto best_chain = [&](const std::vector<std::pair<double, double>>& sliding) -> std::optional<GridDirection> {
     auto excluded = [&](double first) {
       return std::any_of(sliding.begin(), sliding.end(),
                          [&](const auto& range) { return first < range.second && first + pitch > range.first; });
     };
-    std::optional<GridDirection> best;
-    double best_clearance = -1.0;
-    int best_vertices = -1;
-    std::size_t best_crossed = 0;
+    std::vector<Chain> longest;  // the chains with the most units between planes
     for (const auto& [phase, vertices] : phases) {
       // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
       for (double first = lowest + phase; first <= highest; first += pitch) {
@@ -280,7 +306,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
             count = k + 1;
             break;
           }
-        if (count < min_repeats) continue;
+        if (count < min_repeats || (!longest.empty() && count < longest[0].count)) continue;
         bool on_face = false;
         for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
         if (on_face) continue;
@@ -288,27 +314,23 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
         clearance = std::min(clearance, first_plane.clearance(first));
         for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
         clearance = std::min(clearance, backward.clearance(first + count * pitch));
-        // Ranking: more units; then more clearance (beyond rounding); then the smallest seams (fewest
-        // surface cells crossed by the planes); then planes through more existing vertices.
         std::size_t crossed = 0;
         for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-        auto better = [&] {
-          if (!best || count != best->count) return !best || count > best->count;
-          if (std::abs(clearance - best_clearance) > 1e-12) return clearance > best_clearance;
-          if (crossed != best_crossed) return crossed < best_crossed;
-          return vertices > best_vertices;
-        };
-        if (better()) {
-          // A translation's generator is kept exact (no rotation noise from the detector's fit).
-          const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-          best = GridDirection{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
-                               .symmetry = symmetry_index};
-          best_clearance = clearance;
-          best_vertices = vertices;
-          best_crossed = crossed;
-        }
+        if (!longest.empty() && count > longest[0].count) longest.clear();
+        longest.push_back(Chain{first, count, clearance, crossed, vertices});
       }
     }
+    if (longest.empty()) return std::nullopt;
+    std::stable_sort(longest.begin(), longest.end(), [](const Chain& a, const Chain& b) {
+      if (std::abs(a.clearance - b.clearance) > 1e-12) return a.clearance > b.clearance;
+      return a.crossed != b.crossed ? a.crossed < b.crossed : a.vertices > b.vertices;
+    });
+    GridDirection best = settled(longest[0].first, longest[0].count);
+    if (best.count > longest[0].count)  // copies beyond the planes: other phases may leave more
+      for (std::size_t i = 1; i < std::min(longest.size(), kLongestChainsCounted); ++i) {
+        GridDirection other = settled(longest[i].first, longest[i].count);
+        if (other.count > best.count) best = std::move(other);
+      }
     return best;
   };
   // An extrusion cut at the pitch (a corridor reaching out of a map) is no row of units: its
@@ -321,7 +343,6 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     sliding.emplace_back(best->cut, best->cut + best->count * pitch);
     best = best_chain(sliding);
   }
-  if (best) choose_repeated_unit(*best, slab_cells, half, mesh);
   return best;
 }
 
@@ -503,7 +524,8 @@ std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const Symm
       const WholeParts whole = whole_parts(prepared, parts, symmetry, symmetries.region);
       if (whole.empty()) continue;
       std::optional<GridDirection> direction =
-          grid_direction(whole.rest, whole.motion, member, options.min_repeats, options.max_slab_asymmetry);
+          grid_direction(whole.rest, whole.motion, member, options.min_repeats, options.max_slab_asymmetry,
+                         0.0);  // parts are placed for the units between planes: no units beyond them
       if (!direction) continue;
       const std::optional<int> fewest = place_whole_parts(*direction, prepared.model.mesh, parts, whole, prepared.surface.r());
       if (!fewest) continue;
@@ -537,13 +559,11 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
                                  const GridOptions& options, const ProgressCallback& progress) {
   std::vector<GridRule> grids;
   std::vector<GridDirection> translations, screws;
-  // Units near the model's ends that no plane may reach (r-erosion) count when they are copies (a
-  // point cloud's sampling cannot tell a copy from a slab shifted by less than eps).
-  // Slabs are copies within the cells' offset tolerance the symmetries were found with.
-  const double tolerance = symmetries.region.offset_tolerance_eps * prepared.surface.eps();
-  auto count_units_beyond_planes = [&](GridDirection& direction) {
-    if (!prepared.model.is_point_cloud()) count_end_units(direction, prepared.model.mesh, tolerance);
-  };
+  // Units near the model's ends that no plane may reach (r-erosion) count when they are copies
+  // within the cells' offset tolerance the symmetries were found with (a point cloud's sampling
+  // cannot tell a copy from a slab shifted by less than eps).
+  const double copy_tolerance =
+      prepared.model.is_point_cloud() ? 0.0 : symmetries.region.offset_tolerance_eps * prepared.surface.eps();
   std::vector<std::size_t> repeated_generators;  // translations that repeat but gave no direction
   // Families are independent: examined in parallel and joined in family order.
   const std::size_t family_count = symmetries.families.size();
@@ -553,11 +573,8 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     if (family.kind != "translation" && family.kind != "screw") return;
     for (std::size_t m : members_by_power(family)) {
       found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], options.min_repeats,
-                                options.max_slab_asymmetry);
-      if (found[f]) {
-        count_units_beyond_planes(*found[f]);
-        return;
-      }
+                                options.max_slab_asymmetry, copy_tolerance);
+      if (found[f]) return;
     }
   });
   for (std::size_t f = 0; f < family_count; ++f) {
@@ -596,10 +613,8 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     if (grid.directions.empty() || grid.directions.size() >= 3 ||
         !independent_of(symmetries.symmetries[s].transform.translation, grid.directions))
       continue;
-    if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry)) {
-      count_units_beyond_planes(*direction);
-      grid.directions.push_back(std::move(*direction));
-    }
+    if (auto direction = grid_direction(prepared, symmetries.symmetries[s], s, 1, options.max_slab_asymmetry, copy_tolerance))
+      grid.directions.push_back(*direction);
   }
   // No translation cuts across the whole model: a row of parts may, keeping other parts whole
   // (a mesh's connected components; a point cloud has none).
