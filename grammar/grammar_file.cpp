@@ -131,10 +131,11 @@ nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProductio
                         {"placement", matrix_json(c.placement.matrix())},
                         {"original_production", c.original_production}});
   nlohmann::json terminal = nullptr;
+  const bool as_indices = p.terminal.triangles.empty() && stored_as_indices(grammar, p);
   if (!p.terminal.triangles.empty()) {
     write_mesh(folder / file, p.terminal);
     terminal = folder.filename().string() + "/" + file;
-  } else if (stored_as_indices(grammar, p)) {
+  } else if (as_indices) {
     const std::string indices = std::filesystem::path(file).replace_extension(".u32").string();
     write_point_indices(folder / indices, p.terminal_source_points);
     terminal = folder.filename().string() + "/" + indices;
@@ -149,7 +150,7 @@ nlohmann::json production_json(const ShapeGrammar& grammar, const ShapeProductio
                         {"children", children},
                         {"source_site", p.source_site}};
   if (p.source_frame) out["source_frame"] = matrix_json(p.source_frame->matrix());
-  if (stored_as_indices(grammar, p)) out["terminal_of"] = "exemplar_points";
+  if (as_indices) out["terminal_of"] = "exemplar_points";
   add_material_runs(out, "material_runs", p.terminal, grammar);
   return out;
 }

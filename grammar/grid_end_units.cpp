@@ -6,39 +6,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace dg {
-namespace {
-
-// Relative difference of surface area below which two slabs count as equally large.
-constexpr double kSameSlabArea = 1e-4;
-
-}  // namespace
 
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance) {
   const Vec3& d = direction.direction;
-  const double p = direction.pitch;
+  const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
-  // Whether the slab [lo, lo + p], moved by the motion, is the slab [lo + p, lo + 2p].
-  auto copies_next = [&](double lo) {
-    const double a = area_between_planes(mesh, d, lo, lo + p), b = area_between_planes(mesh, d, lo + p, lo + 2 * p);
-    if (a <= 0.0 || std::abs(a - b) > kSameSlabArea * std::max(a, b)) return false;
-    return same_surface(transformed(mesh_between_planes(mesh, d, lo, lo + p, snap), direction.motion),
-                        mesh_between_planes(mesh, d, lo + p, lo + 2 * p, snap), tolerance);
+  // Slab k lies between start + k p and start + (k + 1) p; each walk outward compares a slab with
+  // the one it compared before, so areas and cut meshes are kept per slab.
+  std::map<int, double> areas;
+  std::map<int, TriangleMesh> meshes;
+  auto area = [&](int k) {
+    auto [it, added] = areas.try_emplace(k, 0.0);
+    if (added) it->second = area_between_planes(mesh, d, start + k * p, start + (k + 1) * p);
+    return it->second;
   };
-  int added = 0;
-  while (copies_next(direction.cut - p)) {
-    direction.cut -= p;
-    ++direction.count;
-    ++direction.head_units;
-    ++added;
-  }
-  while (copies_next(direction.cut + (direction.count - 1) * p)) {
-    ++direction.count;
-    ++direction.tail_units;
-    ++added;
-  }
-  return added;
+  auto slab = [&](int k) -> const TriangleMesh& {
+    auto [it, added] = meshes.try_emplace(k);
+    if (added) it->second = mesh_between_planes(mesh, d, start + k * p, start + (k + 1) * p, snap);
+    return it->second;
+  };
+  // Whether slab k, moved by the motion, is slab k + 1.
+  auto copies_next = [&](int k) {
+    const double a = area(k), b = area(k + 1);
+    if (a <= 0.0 || std::abs(a - b) > kSameSlabArea * std::max(a, b)) return false;
+    return same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance);
+  };
+  int head = 0, tail = 0;
+  while (copies_next(-head - 1)) ++head;
+  while (copies_next(direction.count + tail - 1)) ++tail;
+  direction.cut -= head * p;
+  direction.count += head + tail;
+  direction.head_units += head;
+  direction.tail_units += tail;
+  return head + tail;
 }
 
 }  // namespace dg

@@ -6,11 +6,15 @@
 
 namespace dg {
 
+/// Relative difference of surface area below which two slabs of a grid count as equally large
+/// (a hidden second layer of faces, invisible to the voxel cells, tells them apart).
+inline constexpr double kSameSlabArea = 1e-4;
+
 /// Extends `direction` (found on `mesh`, a triangle mesh) by the copies of the unit that lie
 /// before its first plane and after its last: while the slab one pitch before the first plane,
 /// moved by the direction's motion, is the same surface as the slab after it within `tolerance`
-/// (model units; geometry/same_surface.h) and has the same area (relative 1e-4, so a hidden second
-/// layer of faces counts), the first plane moves back one pitch and the slab joins the count as a
+/// (model units; geometry/same_surface.h) and has the same area (kSameSlabArea, so a hidden
+/// second layer of faces counts), the first plane moves back one pitch and the slab joins the count as a
 /// unit kept in the head; likewise after the last plane for the tail. Resizing to the new count
 /// still gives the exemplar (head and tail pieces are unchanged), and each further unit adds one
 /// copy of the repeated unit. Returns the units added.

@@ -83,9 +83,6 @@ class SlabCells {
   std::vector<std::size_t> asymmetric_before_;
 };
 
-// Relative difference of surface area below which two slabs count as equally large.
-constexpr double kSameSlabArea = 1e-4;
-
 // Surface area of `mesh` in each unit slab of `direction`: entry k - 1 for slab k = 1 .. count,
 // between the planes cut + (k - 1) pitch and cut + k pitch (model units^2).
 std::vector<double> unit_slab_areas(const TriangleMesh& mesh, const GridDirection& direction) {
