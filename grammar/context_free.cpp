@@ -477,12 +477,41 @@ class Builder {
     return in_frame(seam_segments(cut.mesh, edge_users(cut.mesh), piece, inside), node);
   }
 
-  // Before the cumulative cut: locations whose own seam curve lies more than twice the fit
-  // limit from their class's first location's are dropped, and so are classes left with fewer
-  // than two locations, so the whole model is not cut for locations check_fit would drop (it
-  // decides on the cumulative cut, within the limit itself).
+  // Before the cumulative cut, after align_frames: locations whose own seam curve lies more
+  // than twice the fit limit from their class's first location's are dropped, and so are
+  // classes left with fewer than two locations, so the whole model is not cut for locations
+  // check_fit would drop (it decides on the cumulative cut, within the limit itself).
   void screen_fit() {
-    keep_fitting_locations([&](const Node& n) { return own_seam_curve(n); }, 2.0 * kSeamFitFraction * surface_.eps());
+    std::vector<std::vector<Segment>> curves(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
+    align_frames(curves);
+    keep_fitting_locations([&](const Node& n) { return curves[static_cast<std::size_t>(&n - nodes_.data())]; },
+                           2.0 * kSeamFitFraction * surface_.eps());
+  }
+
+  // Hand-placed repeats sit a little off the motion that relates them (the table football's
+  // rods: up to 0.13 eps), more than a seam may misfit. A location whose seam curve misses its
+  // class's first one gets its frame moved by the motion that carries its curve onto the first
+  // (align_seam_curve, within kSeamAlignReachFraction eps and kSeamAlignMaxAngle), and its curve
+  // is cut again along the moved seam; the fit screen then decides. `curves[i]`: node i's own
+  // seam curve in its non-terminal's frame, updated.
+  void align_frames(std::vector<std::vector<Segment>>& curves) {
+    const double eps = surface_.eps(), reach = kSeamAlignReachFraction * eps;
+    for (const std::vector<std::size_t>& members : class_nodes_) {
+      const std::vector<Segment>& reference = curves[members.front()];
+      if (!nodes_[members.front()].kept || reference.empty()) continue;
+      for (std::size_t i : members) {
+        Node& n = nodes_[i];
+        const double limit = kSeamFitFraction * eps;
+        if (i == members.front() || !n.kept || seam_misfit(curves[i], reference, limit, eps) <= limit) continue;
+        const std::optional<RigidTransform> correction = align_seam_curve(curves[i], reference, reach, eps);
+        if (!correction || correction->angle() > kSeamAlignMaxAngle) continue;
+        n.frame = n.frame.after(correction->inverse());
+        n.frame_inverse = n.frame.inverse();
+        curves[i] = own_seam_curve(n);
+      }
+    }
   }
 
   // Whether the box around triangle t of the cut model holds a band cell of `node` (true for

@@ -5,41 +5,78 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 namespace dg {
 namespace {
 
-double distance_to_segment(const Vec3& p, const Segment& s) {
+Vec3 closest_on_segment(const Vec3& p, const Segment& s) {
   const Vec3 d = s[1] - s[0];
   const double length2 = d.squaredNorm();
   const double t = length2 > 0.0 ? std::clamp((p - s[0]).dot(d) / length2, 0.0, 1.0) : 0.0;
-  return (s[0] + t * d - p).norm();
+  return s[0] + t * d;
 }
 
-// The largest distance from a sample of `a` (segment ends and midpoints) to the nearest
-// segment of `b`, or infinity when some sample has no segment of `b` within `limit`.
-double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
-  auto key = [&](const Vec3& p) { return cell_key(p, cell); };
-  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid;
-  for (std::uint32_t i = 0; i < b.size(); ++i) {
-    const CellKey lo = key(b[i][0].cwiseMin(b[i][1]) - Vec3::Constant(limit));
-    const CellKey hi = key(b[i][0].cwiseMax(b[i][1]) + Vec3::Constant(limit));
-    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid[{x, y, z}].push_back(i);
-  }
-  constexpr double kFar = std::numeric_limits<double>::infinity();
-  double farthest = 0.0;
-  for (const Segment& s : a)
-    for (const Vec3& p : {s[0], s[1], Vec3(0.5 * (s[0] + s[1]))}) {
-      const auto found = grid.find(key(p));
-      if (found == grid.end()) return kFar;
-      double nearest = kFar;
-      for (std::uint32_t i : found->second) nearest = std::min(nearest, distance_to_segment(p, b[i]));
-      if (nearest > limit) return kFar;
-      farthest = std::max(farthest, nearest);
+// The segments of a curve hashed by the cells (edge `cell`) that lie within `reach` of them.
+class SegmentIndex {
+ public:
+  SegmentIndex(const std::vector<Segment>& segments, double reach, double cell) : segments_(segments), cell_(cell) {
+    for (std::uint32_t i = 0; i < segments.size(); ++i) {
+      const CellKey lo = key(segments[i][0].cwiseMin(segments[i][1]) - Vec3::Constant(reach));
+      const CellKey hi = key(segments[i][0].cwiseMax(segments[i][1]) + Vec3::Constant(reach));
+      for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid_[{x, y, z}].push_back(i);
     }
+  }
+
+  // The point of the curve nearest to p among the segments hashed at p's cell (nothing when
+  // none is: then none lies within `reach`).
+  std::optional<Vec3> nearest(const Vec3& p) const {
+    const auto found = grid_.find(key(p));
+    if (found == grid_.end()) return std::nullopt;
+    std::optional<Vec3> best;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i : found->second) {
+      const Vec3 q = closest_on_segment(p, segments_[i]);
+      const double distance = (q - p).norm();
+      if (distance < best_distance) best_distance = distance, best = q;
+    }
+    return best;
+  }
+
+ private:
+  CellKey key(const Vec3& p) const { return cell_key(p, cell_); }
+
+  const std::vector<Segment>& segments_;
+  double cell_;
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid_;
+};
+
+// Where the misfit and the alignment look at a curve: its segments' ends and midpoints.
+std::vector<Vec3> samples(const std::vector<Segment>& curve) {
+  std::vector<Vec3> points;
+  points.reserve(3 * curve.size());
+  for (const Segment& s : curve) {
+    points.push_back(s[0]);
+    points.push_back(s[1]);
+    points.push_back(0.5 * (s[0] + s[1]));
+  }
+  return points;
+}
+
+// The largest distance from a sample of `a` to the nearest segment of `b`, or infinity when
+// some sample has no segment of `b` within `limit`.
+double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
+  const SegmentIndex index(b, limit, cell);
+  double farthest = 0.0;
+  for (const Vec3& p : samples(a)) {
+    const std::optional<Vec3> q = index.nearest(p);
+    const double distance = q ? (*q - p).norm() : std::numeric_limits<double>::infinity();
+    if (distance > limit) return std::numeric_limits<double>::infinity();
+    farthest = std::max(farthest, distance);
+  }
   return farthest;
 }
 
@@ -62,6 +99,33 @@ std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& us
 
 double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
   return std::max(farthest_sample(a, b, limit, cell), farthest_sample(b, a, limit, cell));
+}
+
+std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
+                                               double reach, double cell) {
+  if (moving.empty() || reference.empty()) return std::nullopt;
+  const std::vector<Vec3> moving_samples = samples(moving), reference_samples = samples(reference);
+  const SegmentIndex on_reference(reference, reach, cell);
+  RigidTransform total;
+  for (int iteration = 0; iteration < kSeamAlignIterations; ++iteration) {
+    std::vector<Segment> moved = moving;
+    for (Segment& s : moved) s = {total.apply(s[0]), total.apply(s[1])};
+    const SegmentIndex on_moved(moved, reach, cell);
+    std::vector<Vec3> from, to;
+    for (const Vec3& p : moving_samples) {
+      const Vec3 here = total.apply(p);
+      const std::optional<Vec3> q = on_reference.nearest(here);
+      if (!q || (*q - here).norm() > reach) return std::nullopt;
+      from.push_back(here), to.push_back(*q);
+    }
+    for (const Vec3& q : reference_samples) {
+      const std::optional<Vec3> p = on_moved.nearest(q);
+      if (!p || (*p - q).norm() > reach) return std::nullopt;
+      from.push_back(*p), to.push_back(q);
+    }
+    total = fit_rigid_transform(from, to).after(total);
+  }
+  return total;
 }
 
 }  // namespace dg

@@ -3,10 +3,12 @@
 // piece cut at one location fits the hole left at another).
 
 #include "geometry/mesh.h"
+#include "geometry/rigid_transform.h"
 #include "geometry/topology.h"
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace dg {
@@ -42,5 +44,24 @@ std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& us
 /// some point has no segment of the other curve within `limit`. `cell` sizes the spatial hash
 /// (about the segment length).
 double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell);
+
+/// How far (fraction of eps) a location's seam curve may lie from its class's first one and
+/// still have its frame aligned onto it (align_seam_curve's reach): repeats a user placed by
+/// hand sit up to 0.13 eps off the motion between them (the table football's rods).
+inline constexpr double kSeamAlignReachFraction = 0.5;
+
+/// Largest rotation (radians, 1 degree: the symmetry stage's default angle tolerance) by which
+/// aligning a seam curve may turn a location's frame.
+inline constexpr double kSeamAlignMaxAngle = 0.017453292519943295;
+
+/// Closest-point iterations of align_seam_curve.
+inline constexpr int kSeamAlignIterations = 8;
+
+/// The rigid motion that carries curve `moving` onto curve `reference` (least squares over
+/// both curves' segment ends and midpoints paired with the nearest point of the other curve,
+/// kSeamAlignIterations times from the identity). Nothing when a sample has no point of the
+/// other curve within `reach` (model units) on the way. `cell` sizes the spatial hash.
+std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
+                                               double reach, double cell);
 
 }  // namespace dg
