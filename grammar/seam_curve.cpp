@@ -30,6 +30,7 @@ class SegmentIndex {
           for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid_[{x, y, z}].push_back(i);
     }
   }
+  SegmentIndex(std::vector<Segment>&&, double, double) = delete;  // keeps a reference to the segments
 
   // The point of the curve nearest to p among the segments hashed at p's cell (nothing when
   // none is: then none lies within `reach`).
@@ -63,6 +64,22 @@ std::vector<Vec3> samples(const std::vector<Segment>& curve) {
     points.push_back(s[1]);
     points.push_back(0.5 * (s[0] + s[1]));
   }
+  return points;
+}
+
+// A curve's segment ends.
+std::vector<Vec3> samples_at_ends(const std::vector<Segment>& curve) {
+  std::vector<Vec3> points;
+  points.reserve(2 * curve.size());
+  for (const Segment& s : curve) points.push_back(s[0]), points.push_back(s[1]);
+  return points;
+}
+
+// A curve's segment ends, each as a segment of length 0 (to index them as a SegmentIndex).
+std::vector<Segment> ends_as_segments(const std::vector<Segment>& curve) {
+  std::vector<Segment> points;
+  points.reserve(2 * curve.size());
+  for (const Vec3& p : samples_at_ends(curve)) points.push_back({p, p});
   return points;
 }
 
@@ -104,25 +121,35 @@ double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b,
 std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
                                                double reach, double cell) {
   if (moving.empty() || reference.empty()) return std::nullopt;
-  const std::vector<Vec3> moving_samples = samples(moving), reference_samples = samples(reference);
-  const SegmentIndex on_reference(reference, reach, cell);
+  // Copies cut alike share their curve's vertices: while every segment end of each curve has
+  // one of the other's within reach, pairing ends with ends finds the motion in a round or two.
+  // Closest points on the segments then settle it, also for curves whose vertices differ.
+  const std::vector<Segment> reference_ends = ends_as_segments(reference);
+  const SegmentIndex on_reference(reference, reach, cell), on_reference_ends(reference_ends, reach, cell);
   RigidTransform total;
-  for (int iteration = 0; iteration < kSeamAlignIterations; ++iteration) {
+  bool ends_pair = true;
+  for (int round = 0; round < kSeamAlignEndRounds + kSeamAlignIterations; ++round) {
+    const bool by_ends = ends_pair && round < kSeamAlignEndRounds;
     std::vector<Segment> moved = moving;
     for (Segment& s : moved) s = {total.apply(s[0]), total.apply(s[1])};
-    const SegmentIndex on_moved(moved, reach, cell);
+    const std::vector<Segment> moved_ends = by_ends ? ends_as_segments(moved) : std::vector<Segment>{};
+    const SegmentIndex on_moved(by_ends ? moved_ends : moved, reach, cell);
     std::vector<Vec3> from, to;
-    for (const Vec3& p : moving_samples) {
-      const Vec3 here = total.apply(p);
-      const std::optional<Vec3> q = on_reference.nearest(here);
-      if (!q || (*q - here).norm() > reach) return std::nullopt;
-      from.push_back(here), to.push_back(*q);
+    auto pair_up = [&](const std::vector<Segment>& curve, const SegmentIndex& other, bool forward) {
+      for (const Vec3& p : by_ends ? samples_at_ends(curve) : samples(curve)) {
+        const std::optional<Vec3> q = other.nearest(p);
+        if (!q || (*q - p).norm() > reach) return false;
+        from.push_back(forward ? p : *q), to.push_back(forward ? *q : p);
+      }
+      return true;
+    };
+    const bool paired = pair_up(moved, by_ends ? on_reference_ends : on_reference, true) && pair_up(reference, on_moved, false);
+    if (!paired && by_ends) {
+      ends_pair = false;
+      --round;  // the round again, by closest points
+      continue;
     }
-    for (const Vec3& q : reference_samples) {
-      const std::optional<Vec3> p = on_moved.nearest(q);
-      if (!p || (*p - q).norm() > reach) return std::nullopt;
-      from.push_back(*p), to.push_back(q);
-    }
+    if (!paired) return std::nullopt;
     total = fit_rigid_transform(from, to).after(total);
   }
   return total;

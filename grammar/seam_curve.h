@@ -54,12 +54,14 @@ inline constexpr double kSeamAlignReachFraction = 0.5;
 /// aligning a seam curve may turn a location's frame.
 inline constexpr double kSeamAlignMaxAngle = 0.017453292519943295;
 
-/// Closest-point iterations of align_seam_curve.
-inline constexpr int kSeamAlignIterations = 8;
+/// Rounds of align_seam_curve that pair segment ends with segment ends, then rounds that pair
+/// samples with the nearest point of the other curve.
+inline constexpr int kSeamAlignEndRounds = 2, kSeamAlignIterations = 8;
 
-/// The rigid motion that carries curve `moving` onto curve `reference` (least squares over
-/// both curves' segment ends and midpoints paired with the nearest point of the other curve,
-/// kSeamAlignIterations times from the identity). Nothing when a sample has no point of the
+/// The rigid motion that carries curve `moving` onto curve `reference`, from the identity: least
+/// squares over both curves' segment ends paired with the other's nearest segment end
+/// (kSeamAlignEndRounds times, while every end has one within `reach`), then over their ends and midpoints paired with the nearest point
+/// of the other curve (kSeamAlignIterations times). Nothing when a sample has no point of the
 /// other curve within `reach` (model units) on the way. `cell` sizes the spatial hash.
 std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
                                                double reach, double cell);
