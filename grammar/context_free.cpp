@@ -33,6 +33,9 @@ using Cells = std::vector<std::uint32_t>;
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 // Seam cuts move vertices within this fraction of eps onto their planes (no slivers thinner).
 constexpr double kCutSnapFraction = 1e-5;
+// Locations of a class tried as the one the others' seams must fit (the first, and when it
+// leaves some out, up to this many in all; the chandelier has classes of 37).
+constexpr std::size_t kMaxReferenceTrials = 16;
 
 // Flags the non-terminals a derivation can reach from `starts` through the productions of
 // `grammar` (the starts included).
@@ -375,9 +378,11 @@ class Builder {
   }
 
   // Keeps, in each class, the locations whose seam curve (`curve_of`, in the non-terminal's
-  // frame) lies within `limit` (model units) of the first location's. A class whose first
-  // location is dropped, or that is left with fewer than two locations (a non-terminal needs an
-  // alternative), loses them all. Returns each class's largest misfit kept.
+  // frame) lies within `limit` (model units) of its reference location's: the first location,
+  // or when that leaves some out, the one of the first kMaxReferenceTrials kept locations that
+  // the most others fit (the metal gate's class of 12 whose first fits none, 7 of the others
+  // fit one another). A class left with fewer than two locations (a non-terminal needs an
+  // alternative) loses them all. Returns each class's largest misfit kept.
   template <class CurveOf>
   std::vector<double> keep_fitting_locations(const CurveOf& curve_of, double limit) {
     // An empty curve never fits: seam_misfit is infinite when the reference has no match.
@@ -388,26 +393,39 @@ class Builder {
 
   // keep_fitting_locations for any seam shape: `shape_of(node)` gives what a location's seam
   // looks like in the non-terminal's frame (nothing fits an empty one), `misfit(shape,
-  // reference shape)` how far it lies from the first location's (model units).
+  // reference shape)` how far it lies from the reference location's (model units).
   template <class ShapeOf, class Misfit>
   std::vector<double> keep_locations(const ShapeOf& shape_of, const Misfit& misfit_of, double limit) {
     std::vector<double> largest(class_nodes_.size(), 0.0);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       const std::vector<std::size_t>& members = class_nodes_[k];
-      const Node& root = nodes_[members.front()];
-      using Shape = decltype(shape_of(root));
-      const Shape reference = root.kept ? shape_of(root) : Shape{};
+      using Shape = decltype(shape_of(nodes_[members.front()]));
+      std::vector<Shape> shapes(members.size());
+      for (std::size_t i = 0; i < members.size(); ++i)
+        if (nodes_[members[i]].kept) shapes[i] = shape_of(nodes_[members[i]]);
+      // Each location's misfit against location `reference` (infinite for one not kept).
+      auto misfits_to = [&](std::size_t reference) {
+        std::vector<double> misfit(members.size(), std::numeric_limits<double>::infinity());
+        if (shapes[reference].empty()) return misfit;
+        for (std::size_t i = 0; i < members.size(); ++i)
+          if (!shapes[i].empty()) misfit[i] = i == reference ? 0.0 : misfit_of(shapes[i], shapes[reference]);
+        return misfit;
+      };
+      auto fitting = [&](const std::vector<double>& misfit) {
+        return std::count_if(misfit.begin(), misfit.end(), [&](double m) { return m <= limit; });
+      };
+      const auto candidates = std::count_if(shapes.begin(), shapes.end(), [](const Shape& s) { return !s.empty(); });
+      std::vector<double> best = misfits_to(0);
+      for (std::size_t r = 1; r < std::min(members.size(), kMaxReferenceTrials) && fitting(best) < candidates; ++r) {
+        if (shapes[r].empty()) continue;
+        std::vector<double> misfit = misfits_to(r);
+        if (fitting(misfit) > fitting(best)) best = std::move(misfit);
+      }
       std::size_t kept = 0;
-      for (std::size_t i : members) {
-        Node& n = nodes_[i];
-        if (n.kept && !reference.empty()) {
-          const double misfit = i == members.front() ? 0.0 : misfit_of(shape_of(n), reference);
-          n.kept = misfit <= limit;
-          if (n.kept) largest[k] = std::max(largest[k], misfit);
-        } else {
-          n.kept = false;
-        }
-        kept += n.kept ? 1 : 0;
+      for (std::size_t i = 0; i < members.size(); ++i) {
+        Node& n = nodes_[members[i]];
+        n.kept = best[i] <= limit;
+        if (n.kept) largest[k] = std::max(largest[k], best[i]), ++kept;
       }
       if (kept < 2)
         for (std::size_t i : members) nodes_[i].kept = false;
@@ -478,7 +496,7 @@ class Builder {
   }
 
   // Before the cumulative cut, after align_frames: locations whose own seam curve lies more
-  // than twice the fit limit from their class's first location's are dropped, and so are
+  // than twice the fit limit from their class's reference location's are dropped, and so are
   // classes left with fewer than two locations, so the whole model is not cut for locations
   // check_fit would drop (it decides on the cumulative cut, within the limit itself).
   void screen_fit() {
@@ -565,7 +583,7 @@ class Builder {
 
   // The docker piece of every kept node of a point cloud: the points in its docker cells and, in
   // its band cells, those on the docker side of its seam; ascending. Points have no seam curve:
-  // a location is kept when its docker's points next to the seam look as the first location's
+  // a location is kept when its docker's points next to the seam look as the reference location's
   // (seam_layer; the misfit is recorded as 0).
   void point_pieces() {
     std::vector<std::vector<std::uint32_t>> cell_points(surface_.cell_count());
@@ -630,8 +648,8 @@ class Builder {
   }
 
   // A docker cut at one location must fit the hole of every other location: the seam curve of
-  // each location, moved into the non-terminal's frame, must be that of its first location
-  // (within kSeamFitFraction of eps). Records each class's largest misfit.
+  // each location, moved into the non-terminal's frame, must be that of its reference location
+  // (keep_fitting_locations, within kSeamFitFraction of eps). Records each class's largest misfit.
   void check_fit() {
     const EdgeUsers users = edge_users(cut_);
     std::vector<char> inside(cut_.triangles.size(), 0);

@@ -248,7 +248,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
     md += "\nPieces are the points of each docker (in its docking site's cells, those on the docker side of the seam); "
           "derived pieces collide when their points share a cube of edge eps away from their seams.\n";
   else
-    md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's first site (up to "
+    md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's reference site (its first, or the one most others fit) (up to "
                       "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
                       kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
