@@ -121,19 +121,17 @@ double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b,
 std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
                                                double reach, double cell) {
   if (moving.empty() || reference.empty()) return std::nullopt;
-  // Copies cut alike share their curve's vertices: while every segment end of each curve has
-  // one of the other's within reach, pairing ends with ends finds the motion in a round or two.
-  // Closest points on the segments then settle it, also for curves whose vertices differ.
+  // One least-squares step after `total`: both curves' samples (segment ends only, `by_ends`)
+  // paired with the nearest sample or point of the other curve; nothing when one has no
+  // partner within reach.
+  const SegmentIndex on_reference(reference, reach, cell);
   const std::vector<Segment> reference_ends = ends_as_segments(reference);
-  const SegmentIndex on_reference(reference, reach, cell), on_reference_ends(reference_ends, reach, cell);
-  RigidTransform total;
-  bool ends_pair = true;
-  for (int round = 0; round < kSeamAlignEndRounds + kSeamAlignIterations; ++round) {
-    const bool by_ends = ends_pair && round < kSeamAlignEndRounds;
+  const SegmentIndex on_reference_ends(reference_ends, reach, cell);
+  auto step = [&](const RigidTransform& total, bool by_ends) -> std::optional<RigidTransform> {
     std::vector<Segment> moved = moving;
     for (Segment& s : moved) s = {total.apply(s[0]), total.apply(s[1])};
-    const std::vector<Segment> moved_ends = by_ends ? ends_as_segments(moved) : std::vector<Segment>{};
-    const SegmentIndex on_moved(by_ends ? moved_ends : moved, reach, cell);
+    if (by_ends) moved = ends_as_segments(moved);
+    const SegmentIndex on_moved(moved, reach, cell);
     std::vector<Vec3> from, to;
     auto pair_up = [&](const std::vector<Segment>& curve, const SegmentIndex& other, bool forward) {
       for (const Vec3& p : by_ends ? samples_at_ends(curve) : samples(curve)) {
@@ -143,14 +141,23 @@ std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& movin
       }
       return true;
     };
-    const bool paired = pair_up(moved, by_ends ? on_reference_ends : on_reference, true) && pair_up(reference, on_moved, false);
-    if (!paired && by_ends) {
-      ends_pair = false;
-      --round;  // the round again, by closest points
-      continue;
-    }
-    if (!paired) return std::nullopt;
-    total = fit_rigid_transform(from, to).after(total);
+    if (!pair_up(moved, by_ends ? on_reference_ends : on_reference, true) || !pair_up(reference, on_moved, false))
+      return std::nullopt;
+    return fit_rigid_transform(from, to);
+  };
+  // Copies cut alike share their curve's vertices: while every segment end of each curve has
+  // one of the other's within reach, pairing ends with ends finds the motion in a round or two.
+  // Closest points on the segments then settle it, also for curves whose vertices differ.
+  RigidTransform total;
+  for (int round = 0; round < kSeamAlignEndRounds; ++round) {
+    const std::optional<RigidTransform> by_ends = step(total, true);
+    if (!by_ends) break;
+    total = by_ends->after(total);
+  }
+  for (int round = 0; round < kSeamAlignIterations; ++round) {
+    const std::optional<RigidTransform> by_points = step(total, false);
+    if (!by_points) return std::nullopt;
+    total = by_points->after(total);
   }
   return total;
 }
