@@ -161,6 +161,7 @@ struct Node {
   std::size_t parent = kNone;
   std::vector<std::size_t> children;
   std::size_t first_production = kNoProduction;
+  double aligned_by = 0.0;  // how far align_frames moved its seam curve (model units), 0 when not
 };
 
 struct Relation {
@@ -525,6 +526,8 @@ class Builder {
         if (i == members.front() || !n.kept || seam_misfit(curves[i], reference, limit, eps) <= limit) continue;
         const std::optional<RigidTransform> correction = align_seam_curve(curves[i], reference, reach, eps);
         if (!correction || correction->angle() > kSeamAlignMaxAngle) continue;
+        for (const Segment& s : curves[i])
+          for (const Vec3& p : s) n.aligned_by = std::max(n.aligned_by, (correction->apply(p) - p).norm());
         n.frame = n.frame.after(correction->inverse());
         n.frame_inverse = n.frame.inverse();
         curves[i] = own_seam_curve(n);
@@ -696,6 +699,8 @@ class Builder {
       else
         ++stats.sites_without_fit;
     }
+    for (const Node& n : nodes_)
+      if (n.kept && n.aligned_by > 0.0) ++stats.locations_aligned, stats.largest_alignment = std::max(stats.largest_alignment, n.aligned_by);
   }
 
   // Parent of each node: the smallest kept docker holding most of its band and docker, and

@@ -100,6 +100,11 @@ struct ContextFreeStats {
   std::size_t sites_slippable = 0;   ///< dropped: the band slides along itself
   std::size_t sites_without_fit = 0;  ///< dropped: the docker cut at one location does not fit the other
   std::size_t nodes = 0;             ///< distinct site locations
+  /// Kept locations whose frame was aligned on the seam of their non-terminal's first location
+  /// (placed a little off the motion relating them), and the farthest such a seam moved (model
+  /// units).
+  std::size_t locations_aligned = 0;
+  double largest_alignment = 0.0;
   /// Productions dropped because their piece holds a triangle cleaning drops (closed exemplars:
   /// it would open a hole), and whether the axiom did too (then the grammar is left empty).
   std::size_t productions_with_holes = 0;

@@ -355,6 +355,12 @@ TEST_CASE("context-free grammar: repeats placed a little off their motion get th
     CHECK(n.seam_misfit <= 1e-2 * eps);
   }
   CHECK(sites >= 5);
+  // The stats say so (the report's sentence on aligned sites): the rods moved by 0.04 to 0.18 eps
+  // relative to one another.
+  CHECK(a.stats.locations_aligned >= 4);
+  CHECK(a.stats.largest_alignment > 0.04 * eps);
+  CHECK(a.stats.largest_alignment < 0.2 * eps);
+  CHECK(exact.stats.locations_aligned == 0);
   check_rebuilds_exemplar(a);
   CHECK(check_variants(a, 5).second.size() >= 2);  // grips on other rods
 }

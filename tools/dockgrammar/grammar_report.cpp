@@ -70,6 +70,17 @@ std::string moving_text(const ContextFreeStats& stats) {
                      stats.productions_moving_the_model);
 }
 
+// " 16 sites sat up to 0.13 eps off ..." when the fit test aligned locations on their
+// non-terminal's reference seam; empty otherwise.
+std::string aligned_text(const ContextFreeStats& stats, double eps) {
+  if (stats.locations_aligned == 0) return "";
+  const bool one = stats.locations_aligned == 1;
+  return fmt::format(" {} site{} sat up to {:.2g} eps off the motion relating {} to {} non-terminal's first site and {} "
+                     "aligned on its seam before the fit test (sites placed by hand a little off the pitch).",
+                     stats.locations_aligned, one ? "" : "s", stats.largest_alignment / eps, one ? "it" : "them",
+                     one ? "its" : "their", one ? "was" : "were");
+}
+
 // "; 12 production(s) were dropped because ..." when context-free rules were dropped for
 // opening holes in a closed model or for being unreachable from the axiom; empty otherwise.
 std::string dropped_rules_text(const ContextFreeStats& stats) {
@@ -248,9 +259,11 @@ std::string context_free_markdown(const AnalysisReport& report) {
     md += "\nPieces are the points of each docker (in its docking site's cells, those on the docker side of the seam); "
           "derived pieces collide when their points share a cube of edge eps away from their seams.\n";
   else
-    md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's reference site (its first, or the one most others fit) (up to "
-                      "{:g} eps fits; exact repeats show float rounding). Derived pieces are welded within {:.1e} eps.\n",
-                      kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps);
+    md += fmt::format("\nSeam misfit: how far the seam of a site lies from that of the non-terminal's reference site, its "
+                      "first or the one most others fit (up to {:g} eps fits; exact repeats show float rounding). Derived "
+                      "pieces are welded within {:.1e} eps.{}\n",
+                      kSeamFitFraction, seam_weld_tolerance(cf, report.grammar.eps) / report.grammar.eps,
+                      aligned_text(report.context_free, report.grammar.eps));
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
   if (report.context_free.productions_moving_the_model > 0) md += "\n" + moving_text(report.context_free) + ".\n";
   if (report.context_free.unreachable_nonterminals > 0) md += "\n" + unreachable_text(report.context_free) + ".\n";
