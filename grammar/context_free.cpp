@@ -511,19 +511,24 @@ class Builder {
 
   // Hand-placed repeats sit a little off the motion that relates them (the table football's
   // rods: up to 0.13 eps), more than a seam may misfit. A location whose seam curve misses its
-  // class's first one gets its frame moved by the motion that carries its curve onto the first
-  // (align_seam_curve, within kSeamAlignReachFraction eps and kSeamAlignMaxAngle), and its curve
-  // is cut again along the moved seam; the fit screen then decides. `curves[i]`: node i's own
-  // seam curve in its non-terminal's frame, updated.
+  // class's first one, at a length within kSeamAlignLengthFraction of it (a rigid motion keeps
+  // lengths: curves of other lengths are other seams), gets its frame moved by the motion that
+  // carries its curve onto the first (align_seam_curve, within kSeamAlignReachFraction eps and
+  // kSeamAlignMaxAngle), and its curve is cut again along the moved seam; the fit screen then
+  // decides. `curves[i]`: node i's own seam curve in its non-terminal's frame, updated.
   void align_frames(std::vector<std::vector<Segment>>& curves) {
     const double eps = surface_.eps(), reach = kSeamAlignReachFraction * eps;
     for (const std::vector<std::size_t>& members : class_nodes_) {
       const std::vector<Segment>& reference = curves[members.front()];
       if (!nodes_[members.front()].kept || reference.empty()) continue;
+      const double reference_length = curve_length(reference);
       for (std::size_t i : members) {
         Node& n = nodes_[i];
         const double limit = kSeamFitFraction * eps;
-        if (i == members.front() || !n.kept || seam_misfit(curves[i], reference, limit, eps) <= limit) continue;
+        if (i == members.front() || !n.kept) continue;
+        // A rigid motion keeps a curve's length: curves of clearly other lengths are other seams.
+        if (std::abs(curve_length(curves[i]) - reference_length) > kSeamAlignLengthFraction * reference_length) continue;
+        if (seam_misfit(curves[i], reference, limit, eps) <= limit) continue;
         const std::optional<RigidTransform> correction = align_seam_curve(curves[i], reference, reach, eps);
         if (!correction || correction->angle() > kSeamAlignMaxAngle) continue;
         for (const Segment& s : curves[i])

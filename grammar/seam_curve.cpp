@@ -114,6 +114,12 @@ std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& us
   return segments;
 }
 
+double curve_length(const std::vector<Segment>& curve) {
+  double length = 0.0;
+  for (const Segment& s : curve) length += (s[1] - s[0]).norm();
+  return length;
+}
+
 double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {
   return std::max(farthest_sample(a, b, limit, cell), farthest_sample(b, a, limit, cell));
 }

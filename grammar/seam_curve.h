@@ -50,6 +50,14 @@ double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b,
 /// hand sit up to 0.13 eps off the motion between them (the table football's rods).
 inline constexpr double kSeamAlignReachFraction = 0.5;
 
+/// How much (fraction) a seam curve's length may differ from the one it is aligned onto: a
+/// rigid motion keeps lengths, and copies cut a little off their place differ by far less (the
+/// table football's rod ends: not at all); curves of other lengths are other seams, not tried.
+inline constexpr double kSeamAlignLengthFraction = 0.02;
+
+/// Total length of a curve's segments (model units).
+double curve_length(const std::vector<Segment>& curve);
+
 /// Largest rotation (radians, 1 degree: the symmetry stage's default angle tolerance) by which
 /// aligning a seam curve may turn a location's frame.
 inline constexpr double kSeamAlignMaxAngle = 0.017453292519943295;

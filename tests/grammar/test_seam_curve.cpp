@@ -68,6 +68,7 @@ TEST_CASE("seam curve alignment: a curve moved a little is carried back onto the
     return moved;
   };
   const std::vector<dg::Segment> moved = moved_by(motion);
+  CHECK(dg::curve_length(moved) == Approx(16.0 * std::sin(std::numbers::pi / 8)));  // 8 sides of 2 sin(pi / 8)
   CHECK(dg::seam_misfit(moved, octagon, 0.1, 0.1) > 0.01);
   const std::optional<dg::RigidTransform> back = dg::align_seam_curve(moved, octagon, 0.1, 0.1);
   REQUIRE(back.has_value());
