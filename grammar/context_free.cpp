@@ -517,14 +517,13 @@ class Builder {
   // kSeamAlignMaxAngle), and its curve is cut again along the moved seam; the fit screen then
   // decides. `curves[i]`: node i's own seam curve in its non-terminal's frame, updated.
   void align_frames(std::vector<std::vector<Segment>>& curves) {
-    const double eps = surface_.eps(), reach = kSeamAlignReachFraction * eps;
+    const double eps = surface_.eps(), reach = kSeamAlignReachFraction * eps, limit = kSeamFitFraction * eps;
     for (const std::vector<std::size_t>& members : class_nodes_) {
       const std::vector<Segment>& reference = curves[members.front()];
       if (!nodes_[members.front()].kept || reference.empty()) continue;
       const double reference_length = curve_length(reference);
       for (std::size_t i : members) {
         Node& n = nodes_[i];
-        const double limit = kSeamFitFraction * eps;
         if (i == members.front() || !n.kept) continue;
         // A rigid motion keeps a curve's length: curves of clearly other lengths are other seams.
         if (std::abs(curve_length(curves[i]) - reference_length) > kSeamAlignLengthFraction * reference_length) continue;
@@ -704,8 +703,11 @@ class Builder {
       else
         ++stats.sites_without_fit;
     }
-    for (const Node& n : nodes_)
-      if (n.kept && n.aligned_by > 0.0) ++stats.locations_aligned, stats.largest_alignment = std::max(stats.largest_alignment, n.aligned_by);
+    for (const Node& n : nodes_) {
+      if (!n.kept || n.aligned_by == 0.0) continue;
+      ++stats.locations_aligned;
+      stats.largest_alignment = std::max(stats.largest_alignment, n.aligned_by);
+    }
   }
 
   // Parent of each node: the smallest kept docker holding most of its band and docker, and

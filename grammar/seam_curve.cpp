@@ -136,8 +136,8 @@ std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& movin
   auto step = [&](const RigidTransform& total, bool by_ends) -> std::optional<RigidTransform> {
     std::vector<Segment> moved = moving;
     for (Segment& s : moved) s = {total.apply(s[0]), total.apply(s[1])};
-    if (by_ends) moved = ends_as_segments(moved);
-    const SegmentIndex on_moved(moved, reach, cell);
+    const std::vector<Segment> moved_ends = by_ends ? ends_as_segments(moved) : std::vector<Segment>{};
+    const SegmentIndex on_moved(by_ends ? moved_ends : moved, reach, cell);
     std::vector<Vec3> from, to;
     auto pair_up = [&](const std::vector<Segment>& curve, const SegmentIndex& other, bool forward) {
       for (const Vec3& p : by_ends ? samples_at_ends(curve) : samples(curve)) {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -60,7 +61,7 @@ double curve_length(const std::vector<Segment>& curve);
 
 /// Largest rotation (radians, 1 degree: the symmetry stage's default angle tolerance) by which
 /// aligning a seam curve may turn a location's frame.
-inline constexpr double kSeamAlignMaxAngle = 0.017453292519943295;
+inline constexpr double kSeamAlignMaxAngle = std::numbers::pi / 180.0;
 
 /// Rounds of align_seam_curve that pair segment ends with segment ends, then rounds that pair
 /// samples with the nearest point of the other curve.
@@ -68,9 +69,10 @@ inline constexpr int kSeamAlignEndRounds = 2, kSeamAlignIterations = 8;
 
 /// The rigid motion that carries curve `moving` onto curve `reference`, from the identity: least
 /// squares over both curves' segment ends paired with the other's nearest segment end
-/// (kSeamAlignEndRounds times, while every end has one within `reach`), then over their ends and midpoints paired with the nearest point
-/// of the other curve (kSeamAlignIterations times). Nothing when a sample has no point of the
-/// other curve within `reach` (model units) on the way. `cell` sizes the spatial hash.
+/// (kSeamAlignEndRounds times, while every end has one within `reach`), then over their ends
+/// and midpoints paired with the nearest point of the other curve (kSeamAlignIterations times).
+/// Nothing when a sample has no point of the other curve within `reach` (model units) on the
+/// way. `cell` sizes the spatial hash.
 std::optional<RigidTransform> align_seam_curve(const std::vector<Segment>& moving, const std::vector<Segment>& reference,
                                                double reach, double cell);
 
