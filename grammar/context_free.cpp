@@ -9,13 +9,12 @@
 #include "grammar/cell_sets.h"
 #include "grammar/seam_curve.h"
 #include "grammar/seam_cut.h"
+#include "grammar/seam_plane.h"
 #include "geometry/random.h"
 #include "geometry/same_surface.h"
 #include "grammar/same_production.h"
 #include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -36,6 +35,9 @@ constexpr double kCutSnapFraction = 1e-5;
 // Locations of a class tried as the one the others' seams must fit (the first, and when it
 // leaves some out, up to this many in all; the chandelier has classes of 37).
 constexpr std::size_t kMaxReferenceTrials = 16;
+// A plane seam through a band that is not flat must leave at least this gap (fraction of eps)
+// between the voxels next to the band on the docker's side and those on the rest's side.
+constexpr double kMinSeamGapFraction = 0.25;
 
 // Flags the non-terminals a derivation can reach from `starts` through the productions of
 // `grammar` (the starts included).
@@ -141,16 +143,6 @@ bool share_a_cell(const Cells& a, const Cells& b) {
   return false;
 }
 
-struct Plane {
-  Vec3 normal = Vec3::UnitX();
-  double offset = 0.0;
-  double distance(const Vec3& p) const { return normal.dot(p) - offset; }
-  Plane moved(const RigidTransform& t) const {
-    const Vec3 n = t.apply_direction(normal);
-    return {n, n.dot(t.apply(offset * normal))};
-  }
-};
-
 struct Node {
   Cells site, docker;
   std::size_t klass = kNone;
@@ -168,55 +160,6 @@ struct Relation {
   std::size_t from, to;
   RigidTransform motion;  // frame(to) = motion after frame(from)
 };
-
-// Least-squares plane through the band's cell centres, oriented towards the docker; nothing
-// when the band is not flat within `flatness` or the docker is not on one side of it.
-std::optional<Plane> fit_seam(const VoxelSurface& surface, const Node& node, double flatness) {
-  if (node.site.size() < 3) return std::nullopt;
-  Vec3 mean = Vec3::Zero();
-  for (std::uint32_t c : node.site) mean += surface.centre(c);
-  mean /= static_cast<double>(node.site.size());
-  Mat3 covariance = Mat3::Zero();
-  for (std::uint32_t c : node.site) {
-    const Vec3 d = surface.centre(c) - mean;
-    covariance += d * d.transpose();
-  }
-  // A cut across a pipe or a bar is perpendicular to the walls it crosses: prefer the direction
-  // the band's surface normals leave out; fall back to the flattest direction of the band.
-  Mat3 normals = Mat3::Zero();
-  for (std::uint32_t c : node.site)
-    for (const CellPlane& p : surface.planes(c)) normals += p.normal * p.normal.transpose();
-  const Eigen::SelfAdjointEigenSolver<Mat3> across(normals);
-  const Eigen::SelfAdjointEigenSolver<Mat3> solver(covariance);
-  const bool walls_decide = across.eigenvalues()(0) < 0.05 * across.eigenvalues()(1);
-  Plane plane{(walls_decide ? across.eigenvectors().col(0) : solver.eigenvectors().col(0)).normalized(), 0.0};
-  plane.offset = plane.normal.dot(mean);
-  for (std::uint32_t c : node.site)
-    if (std::abs(plane.distance(surface.centre(c))) > flatness) return std::nullopt;
-  return plane;
-}
-
-// Orients `plane` so the docker cells next to the band lie on its positive side; false when
-// they do not lie mostly on one side.
-bool orient_towards_docker(const VoxelSurface& surface, const Node& node, const std::vector<char>& site_mask, Plane& plane) {
-  std::size_t positive = 0, negative = 0;
-  for (std::uint32_t c : node.docker) {
-    bool next_to_band = false;
-    for (std::uint32_t n : surface.neighbours(c)) next_to_band = next_to_band || site_mask[n];
-    if (!next_to_band) continue;
-    const double d = plane.distance(surface.centre(c));
-    if (d > 0) ++positive;
-    if (d < 0) ++negative;
-  }
-  const std::size_t total = positive + negative;
-  if (total == 0) return false;
-  if (negative > positive) {
-    plane.normal = -plane.normal;
-    plane.offset = -plane.offset;
-    std::swap(positive, negative);
-  }
-  return positive >= 0.8 * static_cast<double>(total);
-}
 
 // Whether cleaning would drop a triangle of `mesh` as degenerate: a piece holding one opens a
 // hole wherever it is placed.
@@ -320,7 +263,10 @@ class Builder {
   }
 
   // One seam per non-terminal, from its first location: a plane when the band lies flat and the
-  // docker is on one side of it at every location, else the voxel faces inside the band.
+  // docker is on one side of it at every location, else a plane that parts the docker from the
+  // rest at every location however the band is shaped (plane_between_sides), else the voxel
+  // faces inside the band. A plane adds triangles only along its seam curve; voxel faces cut
+  // the band's triangles into staircases.
   void choose_seams() {
     const double flatness = 2.0 * surface_.eps();
     class_seam_.assign(class_nodes_.size(), SeamSurface{});
@@ -328,18 +274,11 @@ class Builder {
     class_face_index_.clear();
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       const Node& root = nodes_[class_nodes_[k].front()];
-      std::optional<Plane> plane = fit_seam(surface_, root, flatness);
-      if (plane && !orient_towards_docker(surface_, root, mask_of(root.site, surface_.cell_count()), *plane)) plane.reset();
-      for (std::size_t i : class_nodes_[k]) {
-        if (!plane) break;
-        const Node& n = nodes_[i];
-        Plane placed = plane->moved(n.frame);
-        bool flat = true;
-        for (std::uint32_t c : n.site) flat = flat && std::abs(placed.distance(surface_.centre(c))) <= 1.5 * flatness;
-        const Vec3 normal = placed.normal;
-        if (!flat || !orient_towards_docker(surface_, n, mask_of(n.site, surface_.cell_count()), placed) ||
-            placed.normal.dot(normal) < 0)
-          plane.reset();
+      std::optional<Plane> plane = flat_band_plane(k, flatness);
+      if (!plane) {
+        std::vector<SeamLocation> locations;
+        for (std::size_t i : class_nodes_[k]) locations.push_back({&nodes_[i].site, &nodes_[i].docker, nodes_[i].frame_inverse});
+        plane = plane_between_sides(surface_, locations, kMinSeamGapFraction * surface_.eps());
       }
       SeamSurface& seam = class_seam_[k];
       if (plane) {
@@ -353,6 +292,26 @@ class Builder {
       }
       class_face_index_.emplace_back(seam);
     }
+  }
+
+  // The least-squares plane of class k's first band (in the non-terminal frame), when every
+  // location's band lies within 1.5 `flatness` of it (placed by its frame) and its docker on
+  // the positive side.
+  std::optional<Plane> flat_band_plane(std::size_t k, double flatness) const {
+    const Node& root = nodes_[class_nodes_[k].front()];
+    std::optional<Plane> plane = fit_band_plane(surface_, root.site, flatness);
+    if (!plane || !orient_towards_docker(surface_, root.docker, mask_of(root.site, surface_.cell_count()), *plane)) return std::nullopt;
+    for (std::size_t i : class_nodes_[k]) {
+      const Node& n = nodes_[i];
+      Plane placed = plane->moved(n.frame);
+      bool flat = true;
+      for (std::uint32_t c : n.site) flat = flat && std::abs(placed.distance(surface_.centre(c))) <= 1.5 * flatness;
+      const Vec3 normal = placed.normal;
+      if (!flat || !orient_towards_docker(surface_, n.docker, mask_of(n.site, surface_.cell_count()), placed) ||
+          placed.normal.dot(normal) < 0)
+        return std::nullopt;
+    }
+    return plane;
   }
 
   // Original triangles touching the listed cells, one flag per triangle of the exemplar.
