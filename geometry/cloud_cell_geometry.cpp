@@ -11,6 +11,10 @@
 namespace dg {
 namespace {
 
+// A block whose points lie within this many times the noise floor of its plane (root mean
+// square) is flat.
+constexpr double kFlatNoiseFactor = 1.2;
+
 struct BlockFit {
   CellPlane plane;
   double variation = 1.0;  ///< lambda0 / sum of eigenvalues; 1 = not fitted
@@ -94,8 +98,20 @@ std::vector<CloudCell> fit_cloud_cells(const PointCloud& cloud, const VoxelSurfa
     const std::vector<std::uint32_t> points = block_points(surface, static_cast<std::uint32_t>(c));
     if (points.size() >= options.min_points) blocks[c] = fit_plane(cloud, points);
   });
+  // Scan noise spreads even a flat block's points: the lower quartile of the blocks' distances
+  // to their planes (most blocks of a scanned object are flat) is the noise floor, and a block
+  // whose points lie no farther than kFlatNoiseFactor times it from its plane counts as flat too.
+  std::vector<double> spreads;
+  for (const BlockFit& block : blocks)
+    if (block.count >= options.min_points && block.variation < 1.0) spreads.push_back(block.rms);
+  double noise_floor = 0.0;
+  if (!spreads.empty()) {
+    std::nth_element(spreads.begin(), spreads.begin() + spreads.size() / 4, spreads.end());
+    noise_floor = spreads[spreads.size() / 4];
+  }
   auto nearly_flat = [&](std::uint32_t c) {
-    return blocks[c].count >= options.min_points && blocks[c].variation < options.flat_variation;
+    return blocks[c].count >= options.min_points &&
+           (blocks[c].variation < options.flat_variation || blocks[c].rms <= kFlatNoiseFactor * noise_floor);
   };
 
   // Noise: the median distance of points to their flat block's plane sets the inlier tolerance.

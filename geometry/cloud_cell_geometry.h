@@ -30,8 +30,9 @@ struct CloudCell {
 };
 
 /// Fits every cell of `surface` (built from `cloud`, with points and neighbours set): a cell
-/// whose 3x3x3 block is flat (small variation, every point within the inlier tolerance of the
-/// block's plane) gets that plane. Otherwise candidate planes (of flat blocks within two rings,
+/// whose 3x3x3 block is flat (small variation, or points no farther from the block's plane, root
+/// mean square, than 1.2 times the scan's noise floor, the lower quartile of that over all
+/// blocks; and every point within the inlier tolerance of the plane) gets that plane. Otherwise candidate planes (of flat blocks within two rings,
 /// and through triples of nearby block points) are chosen greedily by the block points they
 /// hold (at most four, each refitted to its points, none whose points lie along a line), and
 /// those passing through the voxel are kept (at most three), with a crease line for each pair

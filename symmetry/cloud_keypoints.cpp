@@ -1,6 +1,7 @@
 #include "symmetry/cloud_keypoints.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -64,27 +65,49 @@ std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurfac
   const double eps = surface.eps();
   const double tolerance = options.inlier_tolerance_eps * eps;
   const double reach = 1.8 * eps;  // stays inside the 5x5x5 block around the corner's voxel
+  const double cos_same = std::cos(options.same_plane_degrees * std::numbers::pi / 180.0);
+  std::vector<CellPlane> planes;
   for (std::uint32_t c = 0; c < surface.cell_count(); ++c) {
-    const auto planes = surface.planes(c);
-    if (planes.size() < 3) continue;
-    Mat3 normals;
-    for (int k = 0; k < 3; ++k) normals.row(k) = planes[k].normal.transpose();
-    if (std::abs(normals.determinant()) < options.min_corner_determinant) continue;
-    const Vec3 corner = normals.partialPivLu().solve(Vec3(planes[0].offset, planes[1].offset, planes[2].offset));
-    if (surface.voxel_of(corner) != surface.coord(c)) continue;  // each corner once, from its own voxel
-    const std::vector<Vec3> points = nearby_points(cloud, surface, surface.coord(c));
-    for (int a = 0; a < 3; ++a)
-      for (int b = a + 1; b < 3; ++b) {
-        const Vec3 direction = planes[a].normal.cross(planes[b].normal).normalized();
-        Keypoint found{};
-        int sides = 0;
-        for (const Vec3& tangent : {direction, Vec3(-direction)})
-          if (const auto frame = crease_frame(points, planes[a], planes[b], corner, tangent, tolerance, reach, options.min_side_points)) {
-            ++sides;
-            found = *frame;
-          }
-        if (sides == 1) keypoints.push_back(found);
-      }
+    // The planes of the cell and of its neighbours, one per surface (scan noise can leave a
+    // corner's own cell with fewer than its three planes).
+    planes.clear();
+    auto add = [&](const CellPlane& plane) {
+      for (const CellPlane& known : planes)
+        if (std::abs(known.normal.dot(plane.normal)) > cos_same &&
+            std::abs(known.offset - (known.normal.dot(plane.normal) > 0.0 ? plane.offset : -plane.offset)) < tolerance)
+          return;
+      planes.push_back(plane);
+    };
+    for (const CellPlane& plane : surface.planes(c)) add(plane);
+    if (planes.size() < 2) continue;
+    // A crease cell (two planes of its own) may take its third plane from a neighbour.
+    const std::size_t own = std::min<std::size_t>(planes.size(), 3);
+    if (own == 2)
+      for (std::uint32_t n : surface.neighbours(c))
+        for (const CellPlane& plane : surface.planes(n)) add(plane);
+    std::vector<Vec3> points;
+    for (std::size_t k = 2; k < (own == 2 ? planes.size() : 3); ++k) {
+      const std::array<const CellPlane*, 3> corner_planes{&planes[0], &planes[1], &planes[k]};
+      Mat3 normals;
+      for (std::size_t r = 0; r < 3; ++r) normals.row(static_cast<Eigen::Index>(r)) = corner_planes[r]->normal.transpose();
+      if (std::abs(normals.determinant()) < options.min_corner_determinant) continue;
+      const Vec3 corner = normals.partialPivLu().solve(Vec3(planes[0].offset, planes[1].offset, planes[k].offset));
+      if (surface.voxel_of(corner) != surface.coord(c)) continue;  // each corner once, from its own voxel
+      if (points.empty()) points = nearby_points(cloud, surface, surface.coord(c));
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t b = a + 1; b < 3; ++b) {
+          const CellPlane &pa = *corner_planes[a], &pb = *corner_planes[b];
+          const Vec3 direction = pa.normal.cross(pb.normal).normalized();
+          Keypoint found{};
+          int sides = 0;
+          for (const Vec3& tangent : {direction, Vec3(-direction)})
+            if (const auto frame = crease_frame(points, pa, pb, corner, tangent, tolerance, reach, options.min_side_points)) {
+              ++sides;
+              found = *frame;
+            }
+          if (sides == 1) keypoints.push_back(found);
+        }
+    }
   }
   return keypoints;
 }
