@@ -48,21 +48,20 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   }
   CandidateStats candidate_stats;
   std::vector<Candidate> candidates = find_candidates(keypoints, centre, candidate_options, &candidate_stats);
-  if (prepared.model.is_point_cloud()) {
-    // Cloud keypoints of one corner can lie a few voxels apart, proposing tiny motions that
-    // slide flat walls along themselves; densely sampled walls match under any such slide.
-    // Keep motions that move some corner of the bounding box by more than 2 r.
-    const BoundingBox box = prepared.model.bounds();
-    std::erase_if(candidates, [&](const Candidate& c) {
-      double largest = 0.0;
-      for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 p((corner & 1) ? box.max.x() : box.min.x(), (corner & 2) ? box.max.y() : box.min.y(),
-                     (corner & 4) ? box.max.z() : box.min.z());
-        largest = std::max(largest, (c.transform.apply(p) - p).norm());
-      }
-      return largest <= 2.0 * surface.r();
-    });
-  }
+  // Cloud keypoints of one corner can lie a few voxels apart, proposing tiny motions that
+  // slide flat walls along themselves; densely sampled walls match under any such slide. Only
+  // motions that move some corner of the bounding box by more than 2 r are kept.
+  const BoundingBox box = prepared.model.bounds();
+  auto barely_moves = [&](const Candidate& c) {
+    double largest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 p((corner & 1) ? box.max.x() : box.min.x(), (corner & 2) ? box.max.y() : box.min.y(),
+                   (corner & 4) ? box.max.z() : box.min.z());
+      largest = std::max(largest, (c.transform.apply(p) - p).norm());
+    }
+    return largest <= 2.0 * surface.r();
+  };
+  if (prepared.model.is_point_cloud()) std::erase_if(candidates, barely_moves);
   result.stats.keypoints = candidate_stats.keypoints;
   result.stats.pair_transforms = candidate_stats.pair_transforms;
   result.stats.candidates = candidates.size();
@@ -87,6 +86,7 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   if (prepared.model.is_point_cloud()) {
     // A few corner keypoints leave a pitch uncertain by a fraction of a voxel: refit on all points.
     tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) { refine_cloud_candidate(candidates[i]); });
+    std::erase_if(candidates, barely_moves);  // refined onto such a slide, or the identity
     std::vector<Candidate> distinct;
     for (Candidate& c : candidates) {
       const bool known = std::any_of(distinct.begin(), distinct.end(),
@@ -166,7 +166,10 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
       for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical, centre, eps);
       if (known) continue;
       Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
-      if (prepared.model.is_point_cloud()) refine_cloud_candidate(probe);
+      if (prepared.model.is_point_cloud()) {
+        refine_cloud_candidate(probe);
+        if (barely_moves(probe)) continue;  // refined onto a slide or the identity
+      }
       if (probe.matches.size() < candidate_options.min_support) break;
       bool refined_known = false;  // ICP may settle on a motion that is already listed
       for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform, centre, eps);
