@@ -32,12 +32,13 @@ struct CloudCell {
 /// Fits every cell of `surface` (built from `cloud`, with points and neighbours set): a cell
 /// whose 3x3x3 block is flat (small variation, or points no farther from the block's plane, root
 /// mean square, than 1.2 times the scan's noise floor, the lower quartile of that over all
-/// blocks; and every point within the inlier tolerance of the plane) gets that plane. Otherwise candidate planes (of flat blocks within two rings,
-/// and through triples of nearby block points) are chosen greedily by the block points they
-/// hold (at most four, each refitted to its points, none whose points lie along a line), and
-/// those passing through the voxel are kept (at most three), with a crease line for each pair
-/// meeting at more than min_crease_angle_degrees whose intersection passes through the voxel.
-/// A cell with no such plane gets the block's least-squares plane. Parallel, deterministic.
+/// blocks; and every point within the inlier tolerance of the plane) gets that plane.
+/// Otherwise candidate planes (of flat blocks within two rings, and through triples of nearby
+/// block points) are chosen greedily by the block points they hold (at most four, each refitted
+/// to its points, none whose points lie along a line), and those passing through the voxel are
+/// kept (at most three), with a crease line for each pair meeting at more than
+/// min_crease_angle_degrees whose intersection passes through the voxel. A cell with no such
+/// plane gets the block's least-squares plane. Parallel, deterministic.
 std::vector<CloudCell> fit_cloud_cells(const PointCloud& cloud, const VoxelSurface& surface,
                                        const CloudCellOptions& options = {});
 

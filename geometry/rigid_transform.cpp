@@ -99,4 +99,10 @@ RigidTransform rigid_from_matrix(const Mat4& matrix) {
   return {svd.matrixU() * correction * svd.matrixV().transpose(), matrix.topRightCorner<3, 1>()};
 }
 
+double largest_corner_move(const RigidTransform& transform, const BoundingBox& box) {
+  double largest = 0.0;
+  for (int corner = 0; corner < 8; ++corner) largest = std::max(largest, (transform.apply(box.corner(corner)) - box.corner(corner)).norm());
+  return largest;
+}
+
 }  // namespace dg

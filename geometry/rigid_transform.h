@@ -57,6 +57,9 @@ RigidTransform fit_rigid_transform(const std::vector<Vec3>& from, const std::vec
 /// rotations differ by less than `angle` radians (default about half a degree).
 bool same_motion(const RigidTransform& a, const RigidTransform& b, const Vec3& point, double distance, double angle = 0.01);
 
+/// How far `transform` moves the corner of `box` it moves farthest (model units).
+double largest_corner_move(const RigidTransform& transform, const BoundingBox& box);
+
 /// Rigid motion from a 4x4 matrix (the upper-left 3x3 is re-orthonormalized).
 RigidTransform rigid_from_matrix(const Mat4& matrix);
 

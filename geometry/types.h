@@ -35,6 +35,10 @@ struct BoundingBox {
   double longest_side() const { return size().maxCoeff(); }
   /// Length of the diagonal in model units.
   double diagonal() const { return size().norm(); }
+  /// Corner `index` (0 .. 7): bits 0, 1, 2 pick the largest x, y, z.
+  Vec3 corner(int index) const {
+    return {(index & 1) ? max.x() : min.x(), (index & 2) ? max.y() : min.y(), (index & 4) ? max.z() : min.z()};
+  }
 };
 
 }  // namespace dg

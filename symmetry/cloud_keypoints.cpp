@@ -80,23 +80,25 @@ std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurfac
     };
     for (const CellPlane& plane : surface.planes(c)) add(plane);
     if (planes.size() < 2) continue;
-    // A crease cell (two planes of its own) may take its third plane from a neighbour.
-    const std::size_t own = std::min<std::size_t>(planes.size(), 3);
-    if (own == 2)
+    // A crease cell (two planes of its own) tries each plane of its neighbours as the third;
+    // a corner cell uses its first three.
+    const bool crease_cell = planes.size() == 2;
+    if (crease_cell)
       for (std::uint32_t n : surface.neighbours(c))
         for (const CellPlane& plane : surface.planes(n)) add(plane);
+    const std::size_t thirds_end = crease_cell ? planes.size() : 3;
     std::vector<Vec3> points;
-    for (std::size_t k = 2; k < (own == 2 ? planes.size() : 3); ++k) {
-      const std::array<const CellPlane*, 3> corner_planes{&planes[0], &planes[1], &planes[k]};
+    for (std::size_t k = 2; k < thirds_end; ++k) {
+      const std::array<CellPlane, 3> corner_planes{planes[0], planes[1], planes[k]};
       Mat3 normals;
-      for (std::size_t r = 0; r < 3; ++r) normals.row(static_cast<Eigen::Index>(r)) = corner_planes[r]->normal.transpose();
+      normals << planes[0].normal.transpose(), planes[1].normal.transpose(), planes[k].normal.transpose();
       if (std::abs(normals.determinant()) < options.min_corner_determinant) continue;
       const Vec3 corner = normals.partialPivLu().solve(Vec3(planes[0].offset, planes[1].offset, planes[k].offset));
       if (surface.voxel_of(corner) != surface.coord(c)) continue;  // each corner once, from its own voxel
       if (points.empty()) points = nearby_points(cloud, surface, surface.coord(c));
       for (std::size_t a = 0; a < 3; ++a)
         for (std::size_t b = a + 1; b < 3; ++b) {
-          const CellPlane &pa = *corner_planes[a], &pb = *corner_planes[b];
+          const CellPlane &pa = corner_planes[a], &pb = corner_planes[b];
           const Vec3 direction = pa.normal.cross(pb.normal).normalized();
           Keypoint found{};
           int sides = 0;

@@ -23,11 +23,11 @@ struct CloudKeypointOptions {
 /// each pair of the planes gives a crease through the corner. A cell holding two planes (scan
 /// noise often leaves a corner's own cell without its third) tries each other plane of its
 /// neighbours as the third (planes within same_plane_degrees and the inlier tolerance of one
-/// already there count once). A crease that runs out of the
-/// corner on one side only (both planes have points along it there, within two voxels) gives a
-/// keypoint at the corner: tangent along the crease away from the corner, normal pointing away
-/// from the wedge between the two half-planes, binormal = tangent x normal, and the wedge's
-/// opening angle as the descriptor's dihedral. Deterministic, in cell order.
+/// already there count once). A crease that runs out of the corner on one side only (both
+/// planes have points along it there, within two voxels) gives a keypoint at the corner:
+/// tangent along the crease away from the corner, normal pointing away from the wedge between
+/// the two half-planes, binormal = tangent x normal, and the wedge's opening angle as the
+/// descriptor's dihedral. Deterministic, in cell order.
 std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurface& surface,
                                       const CloudKeypointOptions& options = {});
 

@@ -52,15 +52,7 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   // slide flat walls along themselves; densely sampled walls match under any such slide. Only
   // motions that move some corner of the bounding box by more than 2 r are kept.
   const BoundingBox box = prepared.model.bounds();
-  auto barely_moves = [&](const Candidate& c) {
-    double largest = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 p((corner & 1) ? box.max.x() : box.min.x(), (corner & 2) ? box.max.y() : box.min.y(),
-                   (corner & 4) ? box.max.z() : box.min.z());
-      largest = std::max(largest, (c.transform.apply(p) - p).norm());
-    }
-    return largest <= 2.0 * surface.r();
-  };
+  auto barely_moves = [&](const Candidate& c) { return largest_corner_move(c.transform, box) <= 2.0 * surface.r(); };
   if (prepared.model.is_point_cloud()) std::erase_if(candidates, barely_moves);
   result.stats.keypoints = candidate_stats.keypoints;
   result.stats.pair_transforms = candidate_stats.pair_transforms;

@@ -7,8 +7,8 @@ namespace dg::test {
 
 TriangleMesh make_box(const Vec3& lo, const Vec3& hi) {
   TriangleMesh mesh;
-  for (int corner = 0; corner < 8; ++corner)
-    mesh.positions.emplace_back(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(), corner & 4 ? hi.z() : lo.z());
+  const BoundingBox box{lo, hi};
+  for (int corner = 0; corner < 8; ++corner) mesh.positions.push_back(box.corner(corner));
   // Faces as quads (counter-clockwise seen from outside).
   const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
