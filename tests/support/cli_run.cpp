@@ -3,10 +3,34 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <system_error>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace dg::test {
+namespace {
+
+// The folders fresh_folder made, removed with their files when the test process ends, unless
+// DOCKGRAMMAR_KEEP_TEST_FILES is set (to look at a failing test's files).
+struct MadeFolders {
+  std::vector<std::filesystem::path> folders;
+  MadeFolders() = default;
+  MadeFolders(const MadeFolders&) = delete;
+  MadeFolders& operator=(const MadeFolders&) = delete;
+  ~MadeFolders() {
+    if (std::getenv("DOCKGRAMMAR_KEEP_TEST_FILES")) return;
+    std::error_code ignored;
+    for (const std::filesystem::path& folder : folders) std::filesystem::remove_all(folder, ignored);
+  }
+};
+
+MadeFolders& made_folders() {
+  static MadeFolders made;
+  return made;
+}
+
+}  // namespace
 
 CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder) {
   const std::filesystem::path log = folder / "log.txt";
@@ -22,6 +46,7 @@ std::filesystem::path fresh_folder(const std::string& name) {
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
+  made_folders().folders.push_back(folder);
   return folder;
 }
 

@@ -16,7 +16,9 @@ struct CliRun {
 CliRun run_cli(const std::string& arguments, const std::filesystem::path& folder);
 
 /// An empty folder `name`-PID in the system's temporary directory (removed first when present),
-/// PID being the test process's, so two test runs at once never share a folder.
+/// PID being the test process's, so two test runs at once never share a folder. It is removed
+/// with its files when the test process ends, unless the environment sets
+/// DOCKGRAMMAR_KEEP_TEST_FILES (to look at what a failing test wrote).
 std::filesystem::path fresh_folder(const std::string& name);
 
 /// What `dockgrammar analyze` left for the tests: its run and the grammar file it wrote.
