@@ -3,6 +3,7 @@
 // its cleaning report, feature edges and lines, and the voxel surface, with stage timings.
 
 #include "geometry/cleaning.h"
+#include "geometry/cloud_statistics.h"
 #include "geometry/feature_lines.h"
 #include "geometry/mesh.h"
 #include "geometry/progress.h"
@@ -19,6 +20,10 @@ struct StageTiming {
   std::string stage;
   double seconds = 0.0;
 };
+
+/// Radius (in eps) of the neighbourhoods PreparedModel::cloud_sampling is measured in: about 40
+/// points of a cloud with 3 points per occupied voxel.
+inline constexpr double kCloudStatisticsRadius = 2.0;
 
 struct PrepareOptions {
   double r = 0.0;    ///< similarity radius in model units; 0 = 1.6 % of the longest bounding-box side
@@ -40,6 +45,11 @@ struct PreparedModel {
   std::vector<FeatureEdge> feature_edges;  ///< empty for point clouds
   FeatureLines feature_lines;              ///< empty for point clouds
   VoxelSurface surface;
+  /// Point clouds: how far apart the points lie and how far they scatter off the surface, from
+  /// their neighbours within kCloudStatisticsRadius eps (point_statistics); zeros for meshes.
+  PointStatistics cloud_sampling;
+  /// The same within twice that radius: scanner noise reads the same there, surface detail more.
+  PointStatistics cloud_sampling_wide;
   /// Empty when materials are not matched; else the matching class of each material
   /// (material_classes()), as the voxel surface and the feature edges used them.
   std::vector<std::uint32_t> material_classes;

@@ -343,15 +343,23 @@ TEST_CASE("corpus: the pinion's rotation family has one step per tooth", "[symme
 namespace {
 
 // Checks a 400k-point scan of facade(3 x 4) with Gaussian noise of `noise` model units per axis
-// (eps is 0.066): both pitches, as r-symmetric as on the mesh, and the mesh's grid.
-void check_noisy_facade_scan(double noise) {
+// (eps is 0.066 at the default r; `r` 0: the default): both pitches, as r-symmetric as on the
+// mesh, and the mesh's grid.
+void check_noisy_facade_scan(double noise, double r = 0.0) {
   const dg::TriangleMesh mesh = dg::assets::make_asset("facade", {{"columns", 3}, {"rows", 4}}).mesh;
   dg::Model model;
   model.cloud = dg::sample_surface(mesh, 400000, 1);
   model.cloud.normals.clear();
   dg::add_noise(model.cloud, noise, 2);
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  dg::PrepareOptions options;
+  options.r = r;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model), options);
   const double eps = prepared.surface.eps();
+  // The measured scan noise (rms off the surface) is the noise along the surface's normal, and
+  // at the default r it reads about the same in neighbourhoods twice as wide (surface detail
+  // would read more; at larger r those take in the windows' recesses).
+  CHECK(prepared.cloud_sampling.noise == Approx(noise).epsilon(0.1));
+  if (r == 0.0) CHECK(prepared.cloud_sampling_wide.noise < 1.15 * prepared.cloud_sampling.noise);
   const dg::SymmetryResult result = dg::detect_symmetries(prepared);
   INFO(result.note << " (" << result.stats.keypoints << " keypoints, " << result.stats.candidates << " candidates, "
                    << result.stats.rejected_early << " rejected early)");
@@ -379,6 +387,12 @@ TEST_CASE("a point cloud of the facade with noise of 0.11 eps still gives the tw
   // corner's own cell seldom holds all three of its planes: without the noise floor and the
   // neighbours' planes there was no pitch (132 keypoints, one candidate).
   check_noisy_facade_scan(0.0073);
+}
+
+TEST_CASE("a point cloud of the facade with noise of 0.15 eps gives the grid at the r the analysis suggests", "[symmetry][cloud]") {
+  // At the default r (0.267) this scan gives no symmetry; `analyze` measures its noise (0.15 eps)
+  // and suggests the r at which it is 0.10 eps: 0.267 x 1.5.
+  check_noisy_facade_scan(0.01, 0.4);
 }
 
 TEST_CASE("point cloud sampled from the facade gives the two translations", "[symmetry][cloud]") {

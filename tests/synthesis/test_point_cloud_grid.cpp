@@ -11,6 +11,7 @@
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
 #include "support/cli_run.h"
+#include "support/corpus.h"
 #include "support/mesh_distance.h"
 
 #include <catch2/catch.hpp>
@@ -109,6 +110,40 @@ TEST_CASE("a point cloud drawn on the facade gives its 2-grid and resized points
   CHECK(covered_fraction(truth_samples, small.positions, eps) < 0.8);
 }
 
+TEST_CASE("analyze measures a scan's noise and suggests the r that lowers it to 0.1 eps", "[tools][cloud]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-noisy-cloud-test");
+  const std::filesystem::path cloud = folder / "noisy_facade.ply";
+  dg::PointCloud points = dg::sample_surface(facade(3, 4), 400000, 1);
+  points.normals.clear();
+  dg::add_noise(points, 0.01, 2);  // eps is 0.0667 at the default r of 0.267: 0.15 eps
+  dg::write_point_cloud(cloud, points);
+  const dg::test::CliRun analyzed = dg::test::run_cli("analyze " + cloud.string() + " -q --json -o " + (folder / "out").string(), folder);
+  REQUIRE(analyzed.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(analyzed.output.substr(analyzed.output.find('{')));
+  CHECK(summary["point_cloud"]["noise_eps"].get<double>() == Approx(0.15).epsilon(0.1));
+  // The report suggests 0.267 x 0.15 / 0.10: the r at which test_symmetry_detection.cpp finds
+  // this scan's grid.
+  std::ifstream report(folder / "out" / "noisy_facade.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("noisy:") != std::string::npos);
+  CHECK(text.find("-r 0.4") != std::string::npos);
+}
+
+TEST_CASE("corpus: analyze calls the building scan's scatter surface detail and suggests no r for it", "[tools][cloud][corpus]") {
+  const auto scan = dg::test::corpus_file_if_present("meshes/pointcloud-cgal-building/building.ply");
+  if (!scan) return;
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-rough-cloud-test");
+  const dg::test::CliRun analyzed = dg::test::run_cli("analyze " + scan->string() + " -q --json -o " + folder.string(), folder);
+  REQUIRE(analyzed.status == 0);
+  const nlohmann::json summary = nlohmann::json::parse(analyzed.output.substr(analyzed.output.find('{')));
+  // 0.22 eps within 2 eps, 0.48 within 4 eps: no scan noise that a larger r would shrink.
+  CHECK(summary["point_cloud"]["noise_eps"].get<double>() > 0.15);
+  std::ifstream report(folder / "building.report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  CHECK(text.find("rough:") != std::string::npos);
+  CHECK(text.find("noisy:") == std::string::npos);
+}
+
 TEST_CASE("docking sites of a point cloud come from its symmetries", "[grammar][cloud]") {
   dg::Model model;
   model.cloud.positions = dg::sample_surface(facade(2, 3), 400000, 3).positions;
@@ -138,6 +173,8 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   CHECK(summary["dockers"].get<int>() > 0);
   CHECK(summary["point_cloud"]["points"] == 400000);
   CHECK(summary["point_cloud"]["points_per_voxel"].get<double>() > 3.0);
+  CHECK(summary["point_cloud"]["noise_eps"].get<double>() < 0.01);  // sampled exactly on the surface
+  CHECK(analyzed.output.find("noisy:") == std::string::npos);
   const std::filesystem::path grammar_path = folder / "out" / "facade_points.grammar.json";
   std::ifstream grammar_file(grammar_path);
   const nlohmann::json grammar_json = nlohmann::json::parse(grammar_file);

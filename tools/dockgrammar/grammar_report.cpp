@@ -26,20 +26,42 @@ namespace {
 // occupied voxel (3.0 to 8.8 did; 2.5 gave part of it).
 constexpr double kDensePointsPerVoxel = 3.0;
 
+// ... and up to this much scan noise (rms off the surface, fraction of eps: 0.11 did, 0.13 lost a
+// row, 0.15 gave no symmetry; at an r that brought the noise to 0.10 eps, 0.13 and 0.15 gave it).
+constexpr double kQuietNoiseEps = 0.11, kTargetNoiseEps = 0.10;
+
+// Scatter that grows by more than this factor from neighbourhoods of 2 eps to 4 eps is surface
+// detail rather than scan noise (noisy facade scans: 1.07; the corpus building scan: 2.2).
+constexpr double kNoiseGrowthLimit = 1.25;
+
 // Points of a cloud per occupied voxel of its voxel surface.
 double points_per_voxel(const PreparedModel& prepared) {
   const std::size_t voxels = prepared.surface.cell_count();
   return voxels == 0 ? 0.0 : static_cast<double>(prepared.model.cloud.positions.size()) / static_cast<double>(voxels);
 }
 
-// "N points, D per occupied voxel" and, below kDensePointsPerVoxel, a hint to use larger voxels.
+// A cloud's scatter off the surface (rms) as a fraction of eps.
+double noise_eps(const PreparedModel& prepared) { return prepared.cloud_sampling.noise / prepared.surface.eps(); }
+
+// "N points, D per occupied voxel, scatter X eps" and hints to use larger voxels: below
+// kDensePointsPerVoxel, and above kQuietNoiseEps when the scatter is scan noise (the r that brings
+// it to kTargetNoiseEps: noise in eps falls as eps = r / 4 grows).
 std::string cloud_density_text(const PreparedModel& prepared) {
-  const double density = points_per_voxel(prepared);
-  std::string text = fmt::format("{} points, {:.1f} per occupied voxel", prepared.model.cloud.positions.size(), density);
+  const double density = points_per_voxel(prepared), noise = noise_eps(prepared);
+  const std::size_t points = prepared.model.cloud.positions.size();
+  std::string text = fmt::format("{} point{}, {:.1f} per occupied voxel, {:.2f} eps off the surface (rms)", points,
+                                 points == 1 ? "" : "s", density, noise);
   if (density < kDensePointsPerVoxel)
     text += " (sparse: clouds drawn on the bundled facade gave its whole grid at 3 points per voxel and more, part of it "
             "at 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for twice r)";
-  return text;
+  if (noise <= kQuietNoiseEps) return text;
+  if (prepared.cloud_sampling_wide.noise > kNoiseGrowthLimit * prepared.cloud_sampling.noise)
+    return text + fmt::format(" (rough: {:.2f} eps within 4 eps, so surface detail rather than scan noise, which a larger "
+                              "-r does not make smaller)",
+                              prepared.cloud_sampling_wide.noise / prepared.surface.eps());
+  return text + fmt::format(" (noisy: clouds drawn on the bundled facade gave its whole grid up to 0.11 eps of noise, a row "
+                            "less at 0.13, nothing at 0.15; noise in eps falls as r grows: -r {:.3g} gives about {:.2f} eps)",
+                            prepared.surface.r() * noise / kTargetNoiseEps, kTargetNoiseEps);
 }
 
 // NAME of the model's NAME.grammar.json, NAME.report.md and pictures.
@@ -424,7 +446,8 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"eps", report.prepared.surface.eps()},
           {"tolerance", match_tolerances(report).offset_eps},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
-                                                 {"points_per_voxel", points_per_voxel(report.prepared)}}
+                                                 {"points_per_voxel", points_per_voxel(report.prepared)},
+                                                 {"noise_eps", noise_eps(report.prepared)}}
                                 : nlohmann::json(nullptr)},
           {"materials", material_names(report.prepared.model.materials)},
           {"match_materials", report.prepared.materials_matched()},
