@@ -121,6 +121,13 @@ TEST_CASE("analyze measures a scan's noise and suggests the r that lowers it to 
   REQUIRE(analyzed.status == 0);
   const nlohmann::json summary = nlohmann::json::parse(analyzed.output.substr(analyzed.output.find('{')));
   CHECK(summary["point_cloud"]["noise_eps"].get<double>() == Approx(0.15).epsilon(0.1));
+  // `info` gives the same scatter in model units, and within 4 eps about the same (scan noise).
+  const dg::test::CliRun info = dg::test::run_cli("info " + cloud.string() + " --json", folder);
+  REQUIRE(info.status == 0);
+  const nlohmann::json sampling = nlohmann::json::parse(info.output.substr(info.output.find('{')))["cloud_sampling"];
+  CHECK(sampling["noise"].get<double>() == Approx(0.01).epsilon(0.1));
+  CHECK(sampling["noise_wide"].get<double>() == Approx(0.01).epsilon(0.15));
+  CHECK(sampling["spacing"].get<double>() > 0.0);
   // The report suggests 0.267 x 0.15 / 0.10: the r at which test_symmetry_detection.cpp finds
   // this scan's grid.
   std::ifstream report(folder / "out" / "noisy_facade.report.md");

@@ -61,6 +61,12 @@ std::string summary_text(const PreparedModel& prepared) {
   line("r, eps", fmt::format("{:.6g}, {:.6g} (model units)", prepared.surface.r(), prepared.surface.eps()));
   line("voxel surface", fmt::format("{} voxels, {} planes, {} lines, {} points, {:.1f} MB", stats.voxels, stats.planes,
                                     stats.lines, stats.points, static_cast<double>(stats.memory_bytes) / 1e6));
+  if (c.point_cloud) {
+    const double eps = prepared.surface.eps();
+    line("sampling", fmt::format("points {:.3g} apart, {:.3f} eps off the surface (rms) within {} eps, {:.3f} within {}",
+                                 prepared.cloud_sampling.spacing, prepared.cloud_sampling.noise / eps, kCloudStatisticsRadius,
+                                 prepared.cloud_sampling_wide.noise / eps, 2.0 * kCloudStatisticsRadius));
+  }
   if (!c.point_cloud)
     line("feature lines", fmt::format("{} lines, total length {:.6g}, {} samples", prepared.feature_lines.lines.size(),
                                       prepared.feature_lines.total_length(), prepared.feature_lines.samples.size()));
@@ -98,6 +104,10 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
            {{"count", prepared.feature_lines.lines.size()},
             {"total_length", prepared.feature_lines.total_length()},
             {"samples", prepared.feature_lines.samples.size()}}},
+          {"cloud_sampling", prepared.cleaning.point_cloud ? nlohmann::json{{"spacing", prepared.cloud_sampling.spacing},
+                                                                  {"noise", prepared.cloud_sampling.noise},
+                                                                  {"noise_wide", prepared.cloud_sampling_wide.noise}}
+                                                : nlohmann::json(nullptr)},
           {"timings_s", timings}};
 }
 

@@ -9,11 +9,13 @@
 
 namespace dg::cli {
 
-/// Aligned text report: cleaning, r/eps, voxel surface, feature lines, timings.
+/// Aligned text report: cleaning, r/eps, voxel surface, a point cloud's sampling (spacing and
+/// scatter, see PreparedModel::cloud_sampling) or a mesh's feature lines, timings.
 std::string summary_text(const PreparedModel& prepared);
 
 /// The same as JSON: {model, cleaning, materials, match_materials, material_groups (arrays of
-/// names), r, eps, voxel_surface, feature_lines, timings_s}.
+/// names), r, eps, voxel_surface, feature_lines, cloud_sampling (null for a mesh, else {spacing,
+/// noise, noise_wide}, model units), timings_s}.
 nlohmann::json summary_json(const PreparedModel& prepared);
 
 /// The materials' names as a JSON array, in index order.
