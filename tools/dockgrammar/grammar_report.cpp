@@ -56,9 +56,9 @@ std::string cloud_density_text(const PreparedModel& prepared) {
             "at 2.5; a larger -r gives larger voxels, eps = r / 4, and about 4 times the points per voxel for twice r)";
   if (noise <= kQuietNoiseEps) return text;
   if (prepared.cloud_sampling_wide.noise > kNoiseGrowthLimit * prepared.cloud_sampling.noise)
-    return text + fmt::format(" (rough: {:.2f} eps within 4 eps, so surface detail rather than scan noise, which a larger "
-                              "-r does not make smaller)",
-                              prepared.cloud_sampling_wide.noise / prepared.surface.eps());
+    return text + fmt::format(" (rough: {:.2f} eps within {} eps, so surface detail rather than scan noise, which a "
+                              "larger -r does not make smaller)",
+                              prepared.cloud_sampling_wide.noise / prepared.surface.eps(), 2.0 * kCloudStatisticsRadius);
   return text + fmt::format(" (noisy: clouds drawn on the bundled facade gave its whole grid up to 0.11 eps of noise, a row "
                             "less at 0.13, nothing at 0.15; noise in eps falls as r grows: -r {:.3g} gives about {:.2f} eps)",
                             prepared.surface.r() * noise / kTargetNoiseEps, kTargetNoiseEps);

@@ -63,13 +63,13 @@ std::string summary_text(const PreparedModel& prepared) {
                                     stats.lines, stats.points, static_cast<double>(stats.memory_bytes) / 1e6));
   if (c.point_cloud) {
     const double eps = prepared.surface.eps();
-    line("sampling", fmt::format("points {:.3g} apart, {:.3f} eps off the surface (rms) within {} eps, {:.3f} within {}",
+    line("sampling", fmt::format("points {:.3g} apart, {:.3f} eps off the surface (rms) within {} eps, {:.3f} within {} eps",
                                  prepared.cloud_sampling.spacing, prepared.cloud_sampling.noise / eps, kCloudStatisticsRadius,
                                  prepared.cloud_sampling_wide.noise / eps, 2.0 * kCloudStatisticsRadius));
-  }
-  if (!c.point_cloud)
+  } else {
     line("feature lines", fmt::format("{} lines, total length {:.6g}, {} samples", prepared.feature_lines.lines.size(),
                                       prepared.feature_lines.total_length(), prepared.feature_lines.samples.size()));
+  }
   std::string timings;
   for (const StageTiming& t : prepared.timings) timings += fmt::format("{}{} {:.3f} s", timings.empty() ? "" : ", ", t.stage, t.seconds);
   line("timings", timings);
