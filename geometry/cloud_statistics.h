@@ -17,10 +17,13 @@ struct PointStatistics {
   /// distance of those points to their least-squares plane (most probes of a built model lie on
   /// flat parts; creases give larger values); 0 when no probe has that many. Model units.
   double noise = 0.0;
+  /// The same within twice the radius: scanner noise reads about as `noise` there, surface
+  /// detail (bends, relief) more. Model units.
+  double noise_wide = 0.0;
 };
 
-/// Both statistics over up to `probes` points picked evenly through the cloud, from their
-/// neighbours within `radius` (model units), in one pass. Throws InputError for an empty cloud
+/// The statistics over up to `probes` points picked evenly through the cloud, from their
+/// neighbours within `radius` (model units; noise_wide within twice it), in one pass. Throws InputError for an empty cloud
 /// or a non-positive radius.
 PointStatistics point_statistics(const PointCloud& cloud, double radius, std::size_t probes = 4000);
 

@@ -53,9 +53,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
       prepared.cleaning = clean_point_cloud(model.cloud);
       prepared.timings.push_back({"clean", clock.lap()});
       prepared.surface = build_voxel_surface(model.cloud, voxel_options, progress);
-      const double radius = kCloudStatisticsRadius * prepared.surface.eps();
-      prepared.cloud_sampling = point_statistics(model.cloud, radius);
-      prepared.cloud_sampling_wide = point_statistics(model.cloud, 2.0 * radius);
+      prepared.cloud_sampling = point_statistics(model.cloud, kCloudStatisticsRadius * prepared.surface.eps());
       prepared.timings.push_back({"voxel surface", clock.lap()});
     } else {
       prepared.cleaning = clean_mesh(model.mesh);

@@ -46,10 +46,9 @@ struct PreparedModel {
   FeatureLines feature_lines;              ///< empty for point clouds
   VoxelSurface surface;
   /// Point clouds: how far apart the points lie and how far they scatter off the surface, from
-  /// their neighbours within kCloudStatisticsRadius eps (point_statistics); zeros for meshes.
+  /// their neighbours within kCloudStatisticsRadius eps (noise_wide: twice that;
+  /// point_statistics); zeros for meshes.
   PointStatistics cloud_sampling;
-  /// The same within twice that radius: scanner noise reads the same there, surface detail more.
-  PointStatistics cloud_sampling_wide;
   /// Empty when materials are not matched; else the matching class of each material
   /// (material_classes()), as the voxel surface and the feature edges used them.
   std::vector<std::uint32_t> material_classes;

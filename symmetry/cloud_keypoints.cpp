@@ -91,9 +91,10 @@ std::vector<Keypoint> cloud_keypoints(const PointCloud& cloud, const VoxelSurfac
     for (std::size_t k = 2; k < thirds_end; ++k) {
       const std::array<CellPlane, 3> corner_planes{planes[0], planes[1], planes[k]};
       Mat3 normals;
-      normals << planes[0].normal.transpose(), planes[1].normal.transpose(), planes[k].normal.transpose();
+      Vec3 offsets;
+      for (int i = 0; i < 3; ++i) normals.row(i) = corner_planes[i].normal.transpose(), offsets[i] = corner_planes[i].offset;
       if (std::abs(normals.determinant()) < options.min_corner_determinant) continue;
-      const Vec3 corner = normals.partialPivLu().solve(Vec3(planes[0].offset, planes[1].offset, planes[k].offset));
+      const Vec3 corner = normals.partialPivLu().solve(offsets);
       if (surface.voxel_of(corner) != surface.coord(c)) continue;  // each corner once, from its own voxel
       if (points.empty()) points = nearby_points(cloud, surface, surface.coord(c));
       for (std::size_t a = 0; a < 3; ++a)

@@ -359,7 +359,7 @@ void check_noisy_facade_scan(double noise, double r = 0.0) {
   // at the default r it reads about the same in neighbourhoods twice as wide (surface detail
   // would read more; at larger r those take in the windows' recesses).
   CHECK(prepared.cloud_sampling.noise == Approx(noise).epsilon(0.1));
-  if (r == 0.0) CHECK(prepared.cloud_sampling_wide.noise < 1.15 * prepared.cloud_sampling.noise);
+  if (r == 0.0) CHECK(prepared.cloud_sampling.noise_wide < 1.15 * prepared.cloud_sampling.noise);
   const dg::SymmetryResult result = dg::detect_symmetries(prepared);
   INFO(result.note << " (" << result.stats.keypoints << " keypoints, " << result.stats.candidates << " candidates, "
                    << result.stats.rejected_early << " rejected early)");

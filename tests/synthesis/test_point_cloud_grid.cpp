@@ -181,7 +181,13 @@ TEST_CASE("analyze symmetry resize and generate on a point-cloud file", "[tools]
   CHECK(summary["point_cloud"]["points"] == 400000);
   CHECK(summary["point_cloud"]["points_per_voxel"].get<double>() > 3.0);
   CHECK(summary["point_cloud"]["noise_eps"].get<double>() < 0.01);  // sampled exactly on the surface
-  CHECK(analyzed.output.find("noisy:") == std::string::npos);
+  {
+    std::ifstream report(folder / "out" / "facade_points.report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    CHECK(text.find("eps off the surface (rms)") != std::string::npos);
+    CHECK(text.find("noisy:") == std::string::npos);
+    CHECK(text.find("rough:") == std::string::npos);
+  }
   const std::filesystem::path grammar_path = folder / "out" / "facade_points.grammar.json";
   std::ifstream grammar_file(grammar_path);
   const nlohmann::json grammar_json = nlohmann::json::parse(grammar_file);

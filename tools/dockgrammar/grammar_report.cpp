@@ -58,10 +58,10 @@ std::string cloud_density_text(const PreparedModel& prepared) {
             "or part of it as the points fell; a larger -r gives larger voxels, eps = r / 4, and 2 to 3 times the points "
             "per voxel for twice r)";
   if (noise <= kQuietNoiseEps) return text;
-  if (prepared.cloud_sampling_wide.noise > kNoiseGrowthLimit * prepared.cloud_sampling.noise)
+  if (prepared.cloud_sampling.noise_wide > kNoiseGrowthLimit * prepared.cloud_sampling.noise)
     return text + fmt::format(" (rough: {:.2f} eps within {} eps, so surface detail rather than scan noise, which a "
                               "larger -r does not make smaller)",
-                              prepared.cloud_sampling_wide.noise / prepared.surface.eps(), 2.0 * kCloudStatisticsRadius);
+                              prepared.cloud_sampling.noise_wide / prepared.surface.eps(), 2.0 * kCloudStatisticsRadius);
   return text + fmt::format(" (noisy: clouds drawn on the bundled facade gave its whole grid up to 0.11 eps of noise, a row "
                             "less at 0.13, nothing at 0.15; noise in eps falls as r grows: -r {:.3g} gives about {:.2f} eps)",
                             prepared.surface.r() * noise / kTargetNoiseEps, kTargetNoiseEps);

@@ -65,7 +65,7 @@ std::string summary_text(const PreparedModel& prepared) {
     const double eps = prepared.surface.eps();
     line("sampling", fmt::format("points {:.3g} apart, {:.3f} eps off the surface (rms) within {} eps, {:.3f} within {} eps",
                                  prepared.cloud_sampling.spacing, prepared.cloud_sampling.noise / eps, kCloudStatisticsRadius,
-                                 prepared.cloud_sampling_wide.noise / eps, 2.0 * kCloudStatisticsRadius));
+                                 prepared.cloud_sampling.noise_wide / eps, 2.0 * kCloudStatisticsRadius));
   } else {
     line("feature lines", fmt::format("{} lines, total length {:.6g}, {} samples", prepared.feature_lines.lines.size(),
                                       prepared.feature_lines.total_length(), prepared.feature_lines.samples.size()));
@@ -106,7 +106,7 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
             {"samples", prepared.feature_lines.samples.size()}}},
           {"cloud_sampling", prepared.cleaning.point_cloud ? nlohmann::json{{"spacing", prepared.cloud_sampling.spacing},
                                                                   {"noise", prepared.cloud_sampling.noise},
-                                                                  {"noise_wide", prepared.cloud_sampling_wide.noise}}
+                                                                  {"noise_wide", prepared.cloud_sampling.noise_wide}}
                                                 : nlohmann::json(nullptr)},
           {"timings_s", timings}};
 }
