@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <map>
 #include <numeric>
 #include <unordered_map>
 
@@ -26,9 +27,9 @@ using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, FaceInfo>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
                                                        CGAL::Exact_predicates_tag>;
 
-// Cosine between unit normals below which a triangle faces against a region (about 0.1 degree
-// from opposite).
-constexpr double kBackFace = -1.0 + 1e-6;
+// |Cosine| between unit normals above which a triangle lies parallel to a region (about 0.1
+// degree): its back face, or another layer of a face a messy mesh holds twice.
+constexpr double kParallel = 1.0 - 1e-6;
 
 std::uint64_t key_of(std::uint32_t a, std::uint32_t b) {
   const auto [lo, hi] = std::minmax(a, b);
@@ -83,10 +84,12 @@ double area_of(const std::vector<Vec3>& positions, const Triangle& t) {
 // Re-triangulates one region (triangles of `mesh`) keeping the flagged vertices of its border;
 // false (nothing added) when the result would not cover the region exactly, or when one of its
 // new edges (inside it, or a straightened piece of its border) is an edge of a triangle of
-// another region that does not face the other way in the same plane (`elsewhere(a, b, normal)`,
+// another region that does not lie in the same plane (`elsewhere(a, b, normal)`,
 // `normal` the region's unit normal): a messy mesh can have a part touching a face along a line
 // the face's own triangles do not follow, and the new edge would join that part's edge into a
-// non-manifold one. The back face of a double-sided face may share it: the two become twins.
+// non-manifold one. A face in the same plane may share it: the back face of a double-sided
+// face, or another layer of a face the mesh holds twice (the house of the corpus has walls
+// drawn twice, triangulated along other diagonals; the two layers share the cuts' vertices).
 template <typename EdgeTest>
 bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& region, const std::vector<char>& interior_edge,
                    const std::vector<char>& kept, double moved_distance, const EdgeTest& elsewhere, std::vector<Triangle>& out) {
@@ -135,6 +138,7 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
       if (straightened && elsewhere(v, to, normal)) return false;
       const auto end = handle.find(to);
       if (end == handle.end()) return false;  // the border does not close
+      if (to == v) return false;  // a loop with one kept vertex: no edge to constrain
       cdt.insert_constraint(handle.at(v), end->second);
       outline.emplace_back(v, to);
       if (cdt.number_of_vertices() != starts.size()) return false;  // constraints crossed
@@ -170,6 +174,36 @@ bool retriangulate(const TriangleMesh& mesh, const std::vector<std::uint32_t>& r
   return true;
 }
 
+// Per region: the first region whose fragments are the same triangles (vertex sets, either
+// orientation), itself when no earlier one is. A face that a messy mesh holds twice is cut alike
+// in both copies; each copy's new edges would be edges of the other's fragments, so the two are
+// re-triangulated as one.
+std::vector<std::uint32_t> twin_leaders(const TriangleMesh& mesh, const std::vector<std::vector<std::uint32_t>>& regions) {
+  std::map<std::vector<Triangle>, std::uint32_t> first;
+  std::vector<std::uint32_t> leader(regions.size());
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    leader[r] = r;
+    if (regions[r].size() < 2) continue;
+    std::vector<Triangle> signature;
+    for (std::uint32_t t : regions[r]) {
+      Triangle sorted = mesh.triangles[t];
+      std::sort(sorted.begin(), sorted.end());
+      signature.push_back(sorted);
+    }
+    std::sort(signature.begin(), signature.end());
+    leader[r] = first.emplace(std::move(signature), r).first->second;
+  }
+  return leader;
+}
+
+// Sum of the area vectors of `triangles` (twice their area along their mean normal).
+Vec3 area_vector_sum(const TriangleMesh& mesh, const std::vector<Triangle>& triangles) {
+  Vec3 sum = Vec3::Zero();
+  for (const Triangle& t : triangles)
+    sum += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+  return sum;
+}
+
 }  // namespace
 
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
@@ -200,27 +234,69 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   // first two border edges, and how many end there (a third one keeps the vertex).
   std::vector<std::array<std::uint32_t, 2>> border_ends(straighten_label_borders ? mesh.positions.size() : 0);
   std::vector<std::uint8_t> border_count(border_ends.size(), 0);
+  // An edge inside a face the mesh holds twice or more, in layers (copies cut alike, or drawn
+  // along other diagonals, sharing the cuts' vertices): all its users lie in one plane and pair
+  // up two per input triangle, perhaps leaving two users of two input triangles. Each such pair
+  // is joined across it as if the other layers were not there, and only the users left count
+  // below. `users`: the corners 3t + k of the edge's users that count.
+  std::vector<std::uint32_t> users, left;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> joined;
+  auto set_aside_layers = [&](std::size_t first, std::size_t end) {
+    users.clear();
+    for (std::size_t u = first; u < end; ++u) users.push_back(uses[u].second);
+    if (users.size() < 3) return;
+    const Vec3 normal = mesh.area_vector(users.front() / 3).normalized();
+    for (std::uint32_t c : users)
+      if (!(std::abs(mesh.area_vector(c / 3).normalized().dot(normal)) > kParallel)) return;
+    std::vector<std::uint32_t> by_origin = users;
+    std::sort(by_origin.begin(), by_origin.end(), [&](std::uint32_t x, std::uint32_t y) {
+      return std::pair{origin[x / 3], x} < std::pair{origin[y / 3], y};
+    });
+    left.clear();
+    joined.clear();
+    for (std::size_t p = 0; p < by_origin.size();) {
+      std::size_t q = p;
+      while (q < by_origin.size() && origin[by_origin[q] / 3] == origin[by_origin[p] / 3]) ++q;
+      if (q - p == 2 && same_label(by_origin[p] / 3, by_origin[p + 1] / 3))
+        joined.emplace_back(by_origin[p], by_origin[p + 1]);
+      else
+        left.insert(left.end(), by_origin.begin() + static_cast<std::ptrdiff_t>(p), by_origin.begin() + static_cast<std::ptrdiff_t>(q));
+      p = q;
+    }
+    if (joined.empty() || (!left.empty() && left.size() != 2)) return;
+    for (const auto& [x, y] : joined) {
+      interior_edge[x] = interior_edge[y] = 1;
+      parent[find_root(parent, x / 3)] = find_root(parent, y / 3);
+    }
+    users = left;
+  };
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].first == uses[i].first) ++j;
-    const std::uint32_t a = uses[i].second / 3, b = uses[j - 1].second / 3;
+    set_aside_layers(i, j);
+    const std::size_t count = users.size();
+    if (count == 0) {
+      i = j;
+      continue;
+    }
+    const std::uint32_t a = users.front() / 3, b = users.back() / 3;
     const auto lo = static_cast<std::uint32_t>(uses[i].first >> 32), hi = static_cast<std::uint32_t>(uses[i].first & 0xffffffffu);
-    if (j - i == 1 && straighten_open_borders) {
+    if (count == 1 && straighten_open_borders) {
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
         if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
         else kept[v] = 1;
-    } else if (straighten_label_borders && j - i == 2 && (!same_label(a, b) || origin[a] != origin[b])) {
+    } else if (straighten_label_borders && count == 2 && (!same_label(a, b) || origin[a] != origin[b])) {
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}}) {
         if (border_count[v] < 2) border_ends[v][border_count[v]] = w;
         if (border_count[v] < 3) ++border_count[v];
       }
-    } else if (j - i != 2 || !same_label(a, b)) {
+    } else if (count != 2 || !same_label(a, b)) {
       kept[lo] = kept[hi] = 1;
     } else if (straighten_open_borders && origin[a] != origin[b]) {
       between_origins[lo] = between_origins[hi] = 1;
     }
-    if (j - i == 2 && same_label(a, b) && origin[a] == origin[b]) {
-      interior_edge[uses[i].second] = interior_edge[uses[i + 1].second] = 1;
+    if (count == 2 && same_label(a, b) && origin[a] == origin[b]) {
+      interior_edge[users[0]] = interior_edge[users[1]] = 1;
       parent[find_root(parent, a)] = find_root(parent, b);
     }
     i = j;
@@ -240,17 +316,19 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     if (r == std::numeric_limits<std::uint32_t>::max()) r = static_cast<std::uint32_t>(regions.size()), regions.emplace_back();
     regions[r].push_back(t);
   }
+  const std::vector<std::uint32_t> leader = twin_leaders(mesh, regions);
   // A region that keeps its fragments keeps every vertex of them, so neighbours that dropped
   // one of those vertices are re-triangulated with it (else it would be a T-junction there).
   const VertexTriangles around = vertex_triangles(mesh);
-  // Whether edge (a, b) is used by a triangle outside region r that does not face against
-  // `normal` (a back face's triangles do; they lie in the region's plane, on the same edge).
+  // Whether edge (a, b) is used by a triangle outside region r and its twins that is not
+  // parallel to `normal` (one that is lies in the region's plane, on the same edge).
   auto used_outside = [&](std::uint32_t r, std::uint32_t a, std::uint32_t b, const Vec3& normal) {
     const std::uint64_t key = key_of(a, b);
     auto it = std::lower_bound(uses.begin(), uses.end(), std::make_pair(key, std::uint32_t{0}));
     for (; it != uses.end() && it->first == key; ++it) {
       const std::uint32_t t = it->second / 3;
-      if (region_of[find_root(parent, t)] != r && !(mesh.area_vector(t).normalized().dot(normal) < kBackFace)) return true;
+      if (leader[region_of[find_root(parent, t)]] != leader[r] && !(std::abs(mesh.area_vector(t).normalized().dot(normal)) > kParallel))
+        return true;
     }
     return false;
   };
@@ -262,6 +340,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     const std::uint32_t r = todo.front();
     todo.pop_front();
     queued[r] = 0;
+    if (leader[r] != r) continue;  // takes its leader's triangles below
     triangles[r].clear();
     const auto elsewhere = [&](std::uint32_t a, std::uint32_t b, const Vec3& normal) { return used_outside(r, a, b, normal); };
     if (regions[r].size() > 1 && retriangulate(mesh, regions[r], interior_edge, kept, options.moved_distance, elsewhere, triangles[r]))
@@ -277,6 +356,23 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
           if (const std::uint32_t other = region_of[find_root(parent, around.triangles[i])]; !fragments_kept[other] && !queued[other])
             queued[other] = 1, todo.push_back(other);
       }
+    }
+  }
+  // Twins: the leader's triangles (turned over where the twin faces the other way), or, where
+  // the leader kept its fragments, their own (the same vertices).
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    if (leader[r] == r) continue;
+    triangles[r].clear();
+    if (fragments_kept[leader[r]]) {
+      for (std::uint32_t t : regions[r]) triangles[r].push_back(mesh.triangles[t]);
+      continue;
+    }
+    std::vector<Triangle> own;
+    for (std::uint32_t t : regions[r]) own.push_back(mesh.triangles[t]);
+    const bool turned = area_vector_sum(mesh, own).dot(area_vector_sum(mesh, triangles[leader[r]])) < 0.0;
+    for (Triangle t : triangles[leader[r]]) {
+      if (turned) std::swap(t[1], t[2]);
+      triangles[r].push_back(t);
     }
   }
   MergedFragments merged;

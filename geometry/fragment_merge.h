@@ -38,16 +38,18 @@ struct FragmentMergeOptions {
 
 /// Re-triangulates the regions of `mesh` (fragments with equal `origin`, equal `label` and,
 /// when `mesh` has materials, equal material, one of each per triangle, joined across edges
-/// used by exactly two triangles); a material border counts as a label border. Vertices
+/// used by exactly two triangles, or by two of each of the input triangles using them: a face
+/// the mesh holds twice, cut alike); a material border counts as a label border. Vertices
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
-/// kept; others only where an edge between different labels, or an edge not used by exactly
-/// two triangles, ends; `options` lets some of those go too.
+/// kept; others only where an edge between different labels, or an edge used otherwise, ends;
+/// `options` lets some of those go too. Regions made of the same triangles (the copies of a
+/// face held twice) are re-triangulated alike, each keeping its own facing.
 /// A region keeps its fragments when its re-triangulation does not reproduce its area (within
 /// 1e-9 relative, plus options.moved_distance times the length of its border), does not keep
 /// its one-sided border edges as border, or would add an edge that a triangle of another region
-/// already uses (other than its back face, facing the other way in the same plane); its
-/// neighbours then keep every vertex of its fragments too, so the result stays conforming.
-/// Deterministic.
+/// already uses (other than one in the same plane: a back face, or another layer of a face the
+/// mesh holds twice); its neighbours then keep every vertex of its fragments too, so the result
+/// stays conforming. Deterministic.
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
                                 const std::vector<std::uint32_t>& label, const std::vector<char>& pinned,
                                 const FragmentMergeOptions& options = {});

@@ -134,3 +134,53 @@ TEST_CASE("fragment merge: a region that keeps its fragments keeps their border 
   CHECK(edges.non_manifold_edges == 0);
   CHECK(edges.boundary_edges == 40);
 }
+
+namespace {
+
+// `layers` (each a list of triangles on the unit square's four corners, z = 0) diced like
+// diced_square, then merged with one label and straightened open borders.
+dg::MergedFragments merge_diced_layers(const std::vector<std::vector<dg::Triangle>>& layers) {
+  dg::TriangleMesh square;
+  square.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  for (const auto& layer : layers) square.triangles.insert(square.triangles.end(), layer.begin(), layer.end());
+  dg::PlaneFamily x{Vec3::UnitX(), {}}, y{Vec3::UnitY(), {}};
+  for (int k = 1; k <= 9; ++k) x.offsets.push_back(0.1 * k), y.offsets.push_back(0.1 * k);
+  const dg::ZoneCut cut = dg::cut_zone(square, std::vector<char>(square.triangles.size(), 1), {x, y}, 1e-9);
+  const std::vector<std::uint32_t> label(cut.mesh.triangles.size(), 0);
+  return dg::merge_fragments(cut.mesh, cut.origin, label, corners_pinned(cut.mesh), {.straighten_open_borders = true});
+}
+
+// Each triangle's corners, sorted, in sorted order.
+std::vector<dg::Triangle> vertex_sets(const dg::TriangleMesh& mesh) {
+  std::vector<dg::Triangle> sets;
+  for (dg::Triangle t : mesh.triangles) {
+    std::sort(t.begin(), t.end());
+    sets.push_back(t);
+  }
+  std::sort(sets.begin(), sets.end());
+  return sets;
+}
+
+}  // namespace
+
+TEST_CASE("fragment merge: a triangle held twice, cut alike in both copies, is one triangle again in each",
+          "[geometry][fragment_merge]") {
+  // Every cut edge inside the triangle has four users, two per copy.
+  for (const bool turned : {false, true}) {
+    const dg::Triangle copy = turned ? dg::Triangle{0, 2, 1} : dg::Triangle{0, 1, 2};
+    const dg::MergedFragments merged = merge_diced_layers({{{0, 1, 2}}, {copy}});
+    REQUIRE(merged.mesh.triangles.size() == 2);
+    CHECK(vertex_sets(merged.mesh) == std::vector<dg::Triangle>{{0, 1, 2}, {0, 1, 2}});
+    CHECK(merged.mesh.area() == Approx(1.0).epsilon(1e-12));
+    const double facing = merged.mesh.area_vector(0).z() * merged.mesh.area_vector(1).z();
+    CHECK((facing < 0.0) == turned);  // each copy keeps its own facing
+  }
+}
+
+TEST_CASE("fragment merge: a square drawn twice along other diagonals merges in both layers", "[geometry][fragment_merge]") {
+  // The two layers share the cuts' vertices; a new edge of one layer may be an edge of the
+  // other's fragments (same plane), which must not keep the fragments.
+  const dg::MergedFragments merged = merge_diced_layers({{{0, 1, 2}, {0, 2, 3}}, {{0, 1, 3}, {1, 2, 3}}});
+  CHECK(merged.mesh.area() == Approx(2.0).epsilon(1e-12));
+  CHECK(merged.mesh.triangles.size() == 4);  // each layer its two triangles again
+}
