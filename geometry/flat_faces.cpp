@@ -37,18 +37,23 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
     return std::all_of(mesh.triangles[b].begin(), mesh.triangles[b].end(),
                        [&](std::uint32_t v) { return std::abs(normal[a].dot(mesh.positions[v] - p)) <= tolerance; });
   };
+  auto joins = [&](std::uint32_t a, std::uint32_t b) { return a != b && alike(a, b) && flat(a, b) && flat(b, a); };
+  std::vector<std::uint32_t> users;
   for (std::uint32_t t = 0; t < count; ++t)
     for (int k = 0; k < 3; ++k) {
       // The triangles on edge (a, b): those around a that have b.
       const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      std::uint32_t users = 0, other = t;
+      users.clear();
       for (std::uint32_t i = around.first[a]; i < around.first[a + 1]; ++i) {
         const std::uint32_t u = around.triangles[i];
-        if (std::find(mesh.triangles[u].begin(), mesh.triangles[u].end(), b) == mesh.triangles[u].end()) continue;
-        ++users;
-        if (u != t) other = u;
+        if (std::find(mesh.triangles[u].begin(), mesh.triangles[u].end(), b) != mesh.triangles[u].end()) users.push_back(u);
       }
-      if (users == 2 && other > t && alike(t, other) && flat(t, other) && flat(other, t)) group[root(t)] = root(other);
+      // Joined with the one other user it lies flat with, when that one lies flat with no third:
+      // the two sides of a double-sided face (four users) each stay one face.
+      auto partners = [&](std::uint32_t x) { return std::count_if(users.begin(), users.end(), [&](std::uint32_t u) { return joins(x, u); }); };
+      for (std::uint32_t other : users)
+        if (other > t && joins(t, other) && (users.size() == 2 || (partners(t) == 1 && partners(other) == 1)))
+          group[root(t)] = root(other);
     }
   for (std::uint32_t t = 0; t < count; ++t) group[t] = root(t);
   return group;

@@ -12,9 +12,10 @@
 namespace dg {
 
 /// One id per triangle of `mesh` (the index of one triangle of its group): triangles share an id
-/// when edges used by exactly two triangles join them, they face the same side, share their
-/// material and their `kind` flag (one per triangle; empty = all alike), and each one's corners
-/// lie within `tolerance` (model units) of the other's plane.
+/// when edges join them, they face the same side, share their material and their `kind` flag
+/// (one per triangle; empty = all alike), and each one's corners lie within `tolerance` (model
+/// units) of the other's plane. An edge joins its two users, or, when more use it, two that lie
+/// flat so with each other only (each side of a double-sided face stays one face).
 std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance);
 
 /// What more merge_flat_faces may do.

@@ -122,3 +122,22 @@ TEST_CASE("flat faces: a part standing on a line across a face keeps the face's 
   mesh.triangles.pop_back();
   CHECK(dg::merge_flat_faces(mesh).triangles.size() == 2);
 }
+
+TEST_CASE("flat faces: each side of a double-sided face is one face and merges", "[geometry][flat_faces]") {
+  // The unit square held twice, front (up) and back (down), diced 4 x 4: every cut edge inside
+  // has four users, two per side (game assets draw thin gates and fences so).
+  dg::TriangleMesh square;
+  square.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 2, 1}, {0, 3, 2}};
+  const std::vector<dg::PlaneFamily> families{{Vec3::UnitX(), {0.25, 0.5, 0.75}}, {Vec3::UnitY(), {0.25, 0.5, 0.75}}};
+  const dg::TriangleMesh diced = dg::cut_zone(square, std::vector<char>(4, 1), families, 1e-9).mesh;
+  REQUIRE(diced.triangles.size() > 4 * 8);
+  const std::vector<std::uint32_t> face = dg::flat_faces(diced, {}, 1e-9);
+  CHECK(std::set<std::uint32_t>(face.begin(), face.end()).size() == 2);
+  const dg::TriangleMesh merged = dg::merge_flat_faces(diced);
+  CHECK(merged.triangles.size() == 4);
+  CHECK(merged.area() == Approx(2.0).epsilon(1e-12));
+  double facing = 0.0;
+  for (std::size_t t = 0; t < merged.triangles.size(); ++t) facing += merged.area_vector(t).z();
+  CHECK(facing == Approx(0.0).margin(1e-12));  // two triangles up, two down
+}
