@@ -50,7 +50,9 @@ std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vecto
       }
       // Joined with the one other user it lies flat with, when that one lies flat with no third:
       // the two sides of a double-sided face (four users) each stay one face.
-      auto partners = [&](std::uint32_t x) { return std::count_if(users.begin(), users.end(), [&](std::uint32_t u) { return joins(x, u); }); };
+      auto partners = [&](std::uint32_t x) {
+        return std::count_if(users.begin(), users.end(), [&](std::uint32_t u) { return joins(x, u); });
+      };
       for (std::uint32_t other : users)
         if (other > t && joins(t, other) && (users.size() == 2 || (partners(t) == 1 && partners(other) == 1)))
           group[root(t)] = root(other);

@@ -260,7 +260,8 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       if (q - p == 2 && same_label(by_origin[p] / 3, by_origin[p + 1] / 3))
         joined.emplace_back(by_origin[p], by_origin[p + 1]);
       else
-        left.insert(left.end(), by_origin.begin() + static_cast<std::ptrdiff_t>(p), by_origin.begin() + static_cast<std::ptrdiff_t>(q));
+        left.insert(left.end(), by_origin.begin() + static_cast<std::ptrdiff_t>(p),
+                    by_origin.begin() + static_cast<std::ptrdiff_t>(q));
       p = q;
     }
     if (joined.empty() || (!left.empty() && left.size() != 2)) return;
@@ -327,8 +328,8 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     auto it = std::lower_bound(uses.begin(), uses.end(), std::make_pair(key, std::uint32_t{0}));
     for (; it != uses.end() && it->first == key; ++it) {
       const std::uint32_t t = it->second / 3;
-      if (leader[region_of[find_root(parent, t)]] != leader[r] && !(std::abs(mesh.area_vector(t).normalized().dot(normal)) > kParallel))
-        return true;
+      const bool parallel = std::abs(mesh.area_vector(t).normalized().dot(normal)) > kParallel;
+      if (leader[region_of[find_root(parent, t)]] != leader[r] && !parallel) return true;
     }
     return false;
   };
