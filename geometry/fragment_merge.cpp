@@ -196,14 +196,6 @@ std::vector<std::uint32_t> twin_leaders(const TriangleMesh& mesh, const std::vec
   return leader;
 }
 
-// Sum of the area vectors of `triangles` (twice their area along their mean normal).
-Vec3 area_vector_sum(const TriangleMesh& mesh, const std::vector<Triangle>& triangles) {
-  Vec3 sum = Vec3::Zero();
-  for (const Triangle& t : triangles)
-    sum += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-  return sum;
-}
-
 }  // namespace
 
 MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std::uint32_t>& origin,
@@ -328,8 +320,8 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
     auto it = std::lower_bound(uses.begin(), uses.end(), std::make_pair(key, std::uint32_t{0}));
     for (; it != uses.end() && it->first == key; ++it) {
       const std::uint32_t t = it->second / 3;
-      const bool parallel = std::abs(mesh.area_vector(t).normalized().dot(normal)) > kParallel;
-      if (leader[region_of[find_root(parent, t)]] != leader[r] && !parallel) return true;
+      if (leader[region_of[find_root(parent, t)]] == leader[r]) continue;
+      if (!(std::abs(mesh.area_vector(t).normalized().dot(normal)) > kParallel)) return true;
     }
     return false;
   };
@@ -361,6 +353,11 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
   }
   // Twins: the leader's triangles (turned over where the twin faces the other way), or, where
   // the leader kept its fragments, their own (the same vertices).
+  auto facing = [&](std::uint32_t r) {
+    Vec3 sum = Vec3::Zero();
+    for (std::uint32_t t : regions[r]) sum += mesh.area_vector(t);
+    return sum;
+  };
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     if (leader[r] == r) continue;
     triangles[r].clear();
@@ -368,9 +365,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       for (std::uint32_t t : regions[r]) triangles[r].push_back(mesh.triangles[t]);
       continue;
     }
-    std::vector<Triangle> own;
-    for (std::uint32_t t : regions[r]) own.push_back(mesh.triangles[t]);
-    const bool turned = area_vector_sum(mesh, own).dot(area_vector_sum(mesh, triangles[leader[r]])) < 0.0;
+    const bool turned = facing(r).dot(facing(leader[r])) < 0.0;
     for (Triangle t : triangles[leader[r]]) {
       if (turned) std::swap(t[1], t[2]);
       triangles[r].push_back(t);
