@@ -61,7 +61,8 @@ std::vector<std::uint32_t> weld_first(TriangleMesh& mesh, double tolerance) {
 }
 
 // Labelled weld: each labelled vertex, in index order, joins the nearest kept vertex within
-// `tolerance` that no vertex of its copy joined (or one within `same_copy_tolerance`).
+// `tolerance` that no vertex of its copy joined but its seam neighbour (or one within
+// `same_copy_tolerance`).
 std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>& copies,
                                        double same_copy_tolerance) {
   const double cell = std::max(tolerance, 1e-300) * 4.0;
@@ -72,10 +73,27 @@ std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, con
   std::vector<std::uint32_t> next_member(mesh.positions.size(), kEnd);
   std::vector<std::uint32_t> remap(mesh.positions.size());
   std::vector<Vec3> kept;
-  auto holds_copy = [&](std::uint32_t w, std::uint32_t copy) {
-    for (std::uint32_t v = first_member[w]; v != kEnd; v = next_member[v])
-      if (copies[v] == copy) return true;
-    return false;
+  // Open edges of the copies (used by one triangle, both ends labelled): their seam edges.
+  auto edge_key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); };
+  std::unordered_map<std::uint64_t, int> seam_edge_uses;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (copies[t[k]] != kNotOnSeam && copies[t[(k + 1) % 3]] != kNotOnSeam) ++seam_edge_uses[edge_key(t[k], t[(k + 1) % 3])];
+  auto seam_edge = [&](std::uint32_t a, std::uint32_t b) {
+    const auto found = seam_edge_uses.find(edge_key(a, b));
+    return found != seam_edge_uses.end() && found->second == 1;
+  };
+  // Whether a vertex of v's copy joined w, unless one did that is v's neighbour along the copy's
+  // seam: a seam edge shorter than the tolerance whose ends both lie nearest to w collapses
+  // (a cut leaves such edges; kept, the second end would fold back across the first).
+  auto holds_copy = [&](std::uint32_t w, std::uint32_t v) {
+    bool holds = false;
+    for (std::uint32_t u = first_member[w]; u != kEnd; u = next_member[u]) {
+      if (copies[u] != copies[v]) continue;
+      if (seam_edge(u, v)) return false;
+      holds = true;
+    }
+    return holds;
   };
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3& p = mesh.positions[v];
@@ -91,7 +109,7 @@ std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, con
             for (std::uint32_t w = bucket->second; w != kEnd; w = next[w]) {
               const double distance = (kept[w] - p).norm();
               if (distance <= nearest && (distance < nearest || w < found) &&
-                  (distance <= same_copy_tolerance || !holds_copy(w, copies[v]))) {
+                  (distance <= same_copy_tolerance || !holds_copy(w, v))) {
                 found = w;
                 nearest = distance;
               }

@@ -20,7 +20,10 @@ inline constexpr std::uint32_t kNotOnSeam = std::numeric_limits<std::uint32_t>::
 /// vertices labelled kNotOnSeam are kept as they are, and each other vertex joins the nearest
 /// earlier kept vertex within `tolerance` that no vertex of its own copy joined, or that lies
 /// within `same_copy_tolerance`: touching parts of one copy stay apart, its duplicate vertices
-/// merge. Returns the new index of every old vertex. Deterministic.
+/// merge. A vertex of its copy that is its neighbour along an open edge (a seam edge of the
+/// copy) does not count: such an edge, shorter than the tolerance, collapses when both its ends
+/// lie nearest to one vertex (kept, the second end would fold back across the first). Returns
+/// the new index of every old vertex. Deterministic.
 std::vector<std::uint32_t> weld_vertices(TriangleMesh& mesh, double tolerance,
                                          const std::vector<std::uint32_t>* copies = nullptr,
                                          double same_copy_tolerance = 0.0);

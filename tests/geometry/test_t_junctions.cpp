@@ -3,6 +3,7 @@
 
 #include "geometry/t_junctions.h"
 
+#include "geometry/random.h"
 #include "geometry/topology.h"
 #include "support/shapes.h"
 
@@ -10,6 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <map>
+#include <vector>
 
 using dg::Vec3;
 
@@ -175,4 +179,96 @@ TEST_CASE("close_triangular_holes fills a small hole of three open edges, orient
   CHECK(box.materials.size() == 12);
   // A closed mesh has no hole to close.
   CHECK(dg::close_triangular_holes(box, 10.0) == 0);
+}
+
+namespace {
+
+// Two strips meeting along the x axis in the plane z = 0, for seams that misfit a little: copy
+// 0 below, between its seam vertices at `lower_x` (on y = 0) and the corners (0, -1), (2, -1);
+// copy 1 above, between its seam vertices `upper` (near y = 0) and the corners (0, 1), (2, 1).
+// Both seams run from x = 0 to x = 2; each strip is a fan from its two far corners. `copies`
+// gets the seam labels of both.
+dg::TriangleMesh seam_strips(const std::vector<double>& lower_x, const std::vector<Vec3>& upper,
+                             std::vector<std::uint32_t>& copies) {
+  dg::TriangleMesh mesh;
+  auto strip = [&](const std::vector<Vec3>& seam, double far_y, bool below) {
+    const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), seam.begin(), seam.end());
+    const auto left = static_cast<std::uint32_t>(mesh.positions.size()), right = left + 1;
+    mesh.positions.push_back(Vec3(0, far_y, 0));
+    mesh.positions.push_back(Vec3(2, far_y, 0));
+    const auto middle = static_cast<std::uint32_t>(seam.size() / 2);
+    auto add = [&](std::uint32_t corner, std::uint32_t a, std::uint32_t b) {  // counter-clockwise seen from +z
+      mesh.triangles.push_back(below ? dg::Triangle{corner, b, a} : dg::Triangle{corner, a, b});
+    };
+    for (std::uint32_t i = 0; i < middle; ++i) add(left, first + i, first + i + 1);
+    if (below)
+      mesh.triangles.push_back({left, right, first + middle});
+    else
+      mesh.triangles.push_back({left, first + middle, right});
+    for (auto i = middle; i + 1 < seam.size(); ++i) add(right, first + i, first + i + 1);
+    std::vector<char> all(seam.size() + 2, 1);
+    dg::append_seam_labels(copies, all, below ? 0 : 1);
+  };
+  std::vector<Vec3> lower;
+  for (double x : lower_x) lower.push_back(Vec3(x, 0, 0));
+  strip(lower, -1.0, true);
+  strip(upper, 1.0, false);
+  return mesh;
+}
+
+// Whether the two strips closed into one 2 x 2 rectangle: no non-manifold or inconsistent edge,
+// and the open edges are its outer sides (their length about its perimeter).
+bool closed_into_rectangle(const dg::TriangleMesh& mesh) {
+  const dg::EdgeStatistics edges = dg::edge_statistics(mesh);
+  double open_length = 0.0;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const dg::Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  for (const auto& [edge, count] : uses)
+    if (count == 1) open_length += (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
+  return edges.non_manifold_edges == 0 && edges.inconsistent_edges == 0 && std::abs(open_length - 8.0) < 0.1;
+}
+
+}  // namespace
+
+TEST_CASE("labelled weld: a short seam edge next to a neighbour's vertex collapses instead of folding", "[geometry][t_junctions]") {
+  // Copy 1's seam lies up to 0.0095 off copy 0's (the weld tolerance is 0.02) and holds two
+  // vertices 0.003 apart (x = 1.0507 and 1.0537), both nearest to copy 0's vertex at x = 1.0621:
+  // the first joins it; the second must too, or it folds back across the first.
+  std::vector<std::uint32_t> copies;
+  dg::TriangleMesh mesh = seam_strips({0, 0.3678, 0.4931, 0.96, 1.0621, 1.6475, 1.7225, 2},
+                                      {Vec3(0, 0.0065, 0), Vec3(0.4044, 0.0034, 0), Vec3(0.9866, 0.0073, 0),
+                                       Vec3(1.0064, 0.0082, 0), Vec3(1.0507, 0.0060, 0), Vec3(1.0537, 0.0089, 0),
+                                       Vec3(1.2225, 0.0095, 0), Vec3(1.2883, 0.0069, 0), Vec3(1.6967, 0.0078, 0),
+                                       Vec3(1.8858, 0.0038, 0), Vec3(2, 0.0034, 0)},
+                                      copies);
+  dg::resolve_t_junctions(mesh, 0.02, &copies, 3e-4);
+  CHECK(closed_into_rectangle(mesh));
+  CHECK(mesh.area() == Approx(4.0).margin(0.05));
+}
+
+TEST_CASE("labelled weld: seams that misfit by up to half the tolerance close", "[geometry][t_junctions]") {
+  // Random seams: copy 0's vertices on y = 0, copy 1's 0.003 to 0.01 off it (the weld tolerance
+  // is 0.02, twice the largest misfit, as for derived pieces), some of them in short runs next to
+  // a vertex of copy 0, as cuts leave them.
+  dg::Random random(7);
+  int failures = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<double> lower_x{0.0, 2.0}, upper_x{0.0, 2.0};
+    for (int n = 2 + static_cast<int>(random.uniform() * 5); n > 0; --n) lower_x.push_back(random.uniform(0.05, 1.95));
+    for (int n = 2 + static_cast<int>(random.uniform() * 5); n > 0; --n) upper_x.push_back(random.uniform(0.05, 1.95));
+    for (int n = static_cast<int>(random.uniform() * 4); n > 0; --n)
+      upper_x.push_back(lower_x[2 + static_cast<std::size_t>(random.uniform() * static_cast<double>(lower_x.size() - 2))] +
+                        random.uniform(-0.03, 0.03));
+    std::sort(lower_x.begin(), lower_x.end());
+    std::sort(upper_x.begin(), upper_x.end());
+    std::vector<Vec3> upper;
+    for (double x : upper_x) upper.push_back(Vec3(x, random.uniform(0.003, 0.01), 0));
+    std::vector<std::uint32_t> copies;
+    dg::TriangleMesh mesh = seam_strips(lower_x, upper, copies);
+    dg::resolve_t_junctions(mesh, 0.02, &copies, 3e-4);
+    failures += closed_into_rectangle(mesh) ? 0 : 1;
+  }
+  CHECK(failures == 0);
 }
