@@ -1,12 +1,12 @@
 // The files in assets/models/ are exactly what the generator writes now.
 
 #include "assets/generator/committed_instances.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace {
 
@@ -21,9 +21,7 @@ std::string file_bytes(const std::filesystem::path& path) {
 
 TEST_CASE("committed asset files equal freshly generated ones", "[assets]") {
   const std::filesystem::path models = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets" / "models";
-  const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path() / ("dockgrammar-assets-test-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(scratch);
+  const std::filesystem::path scratch = dg::test::fresh_folder("dockgrammar-assets-test");
   for (const dg::assets::Instance& instance : dg::assets::committed_instances()) {
     INFO(instance.stem);
     const dg::assets::Asset asset = dg::assets::make_asset(instance.model, instance.params);
@@ -37,5 +35,4 @@ TEST_CASE("committed asset files equal freshly generated ones", "[assets]") {
       CHECK(file_bytes(committed) == file_bytes(std::filesystem::path(fresh).replace_extension(extension)));
     }
   }
-  std::filesystem::remove_all(scratch);
 }

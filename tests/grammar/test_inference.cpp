@@ -12,6 +12,7 @@
 #include "grammar/inference_transform.h"
 #include "grammar/lsystem_text.h"
 #include "synthesis/turtle.h"
+#include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,7 +22,6 @@
 #include <fstream>
 #include <random>
 #include <string>
-#include <unistd.h>
 
 using namespace dg;
 
@@ -226,8 +226,7 @@ TEST_CASE("inference: a drawing without extent is an input error", "[grammar][in
 
 TEST_CASE("inference: dockgrammar lsystem infer", "[grammar][inference][cli]") {
   namespace fs = std::filesystem;
-  const fs::path folder = fs::temp_directory_path() / ("dg_infer_cli_" + std::to_string(::getpid()));
-  fs::create_directories(folder);
+  const fs::path folder = dg::test::fresh_folder("dg_infer_cli");
   {
     std::ofstream svg(folder / "row.svg");
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<g transform=\"translate(5 5)\">\n";
@@ -249,5 +248,4 @@ TEST_CASE("inference: dockgrammar lsystem infer", "[grammar][inference][cli]") {
                                   (folder / "err.txt").string()).c_str());
   CHECK(WEXITSTATUS(status) == 2);
   CHECK(read_text_file(folder / "err.txt").find("bad.svg:2: path data") != std::string::npos);
-  fs::remove_all(folder);
 }
