@@ -1,9 +1,11 @@
-// Out-of-range numbers on the command line: one short usage error with exit status 2.
+// Out-of-range numbers on the command line and output folders that cannot be made: one short
+// error with exit status 2.
 
 #include "support/cli_run.h"
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <string>
 
 TEST_CASE("options: negative, infinite and oversized numbers are usage errors with short messages", "[tools]") {
@@ -33,4 +35,18 @@ TEST_CASE("options: negative, infinite and oversized numbers are usage errors wi
   CHECK(coarse.status == 2);
   CHECK(coarse.output.find("voxel size 0.5 is larger than the radius r = 0.1") != std::string::npos);
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("options: an output folder that a file stands in the way of is one clear error", "[tools]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-output-folder-test");
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
+  const std::filesystem::path file = folder / "taken.obj";
+  std::ofstream(file) << "# not a folder\n";
+  for (const std::filesystem::path& out : {file, file / "deeper"}) {
+    CAPTURE(out);
+    const dg::test::CliRun run = dg::test::run_cli("analyze " + model + " -q -o " + out.string(), folder);
+    CHECK(run.status == 2);
+    CHECK(run.output.find(out.string() + ": cannot create the output folder: " + file.string() + " is a file, not a folder") !=
+          std::string::npos);
+  }
 }

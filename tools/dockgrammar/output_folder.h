@@ -6,7 +6,8 @@
 namespace dg::cli {
 
 /// Creates `folder` and its missing parents (nothing for an empty path, the current folder);
-/// throws InputError "FOLDER: cannot create the output folder" when that fails.
+/// throws InputError "FOLDER: cannot create the output folder: REASON" when that fails (a file in
+/// the way is named).
 void create_output_folder(const std::filesystem::path& folder);
 
 }  // namespace dg::cli
