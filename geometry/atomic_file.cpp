@@ -2,11 +2,28 @@
 
 #include "geometry/errors.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <string>
 #include <system_error>
 #include <unistd.h>
 
 namespace dg {
+namespace {
+
+// Why a file could not be opened for writing at `path`: its folder is missing or is a file,
+// else the system's reason (read right after the failed open).
+std::string why_not_writable(const std::filesystem::path& path) {
+  const int reason = errno;
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code ignored;
+  if (!std::filesystem::exists(folder, ignored)) return "the folder " + folder.string() + " does not exist";
+  if (!std::filesystem::is_directory(folder, ignored)) return folder.string() + " is a file, not a folder";
+  return reason != 0 ? std::strerror(reason) : "unknown reason";
+}
+
+}  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
@@ -14,7 +31,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   temporary += ".tmp-" + std::to_string(::getpid());
   {
     std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-    if (!out) throw InputError(path.string() + ": cannot open for writing");
+    if (!out) throw InputError(path.string() + ": cannot open for writing: " + why_not_writable(path));
     try {
       write(out);
     } catch (...) {
