@@ -2,7 +2,9 @@
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
+#include "synthesis/grid_resize.h"
 #include "support/corpus.h"
+#include "support/mesh_distance.h"
 #include "support/shapes.h"
 
 #include <catch2/catch.hpp>
@@ -11,6 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <utility>
+#include <vector>
 
 using dg::Vec3;
 
@@ -95,6 +99,33 @@ TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the g
   for (const auto& piece : pieces) area += piece.mesh.area();
   // The pieces hold one unit per repeated direction: corners + borders + one interior cell.
   CHECK(area < a.prepared.model.mesh.area());
+}
+
+TEST_CASE("shelf(n x m): a 2-grid along the column and row pitches that resizes into the generator's shelves", "[grammar][grid]") {
+  // Columns repeat every cell width plus a divider (0.35 + 0.018), rows every cell height plus a
+  // board (0.3 + 0.018).
+  for (const auto& [columns, rows] : std::vector<std::pair<int, int>>{{3, 4}, {5, 3}}) {
+    CAPTURE(columns, rows);
+    const Analysis a = analyze_asset("shelf", {{"columns", columns}, {"rows", rows}});
+    REQUIRE(a.grids.size() == 1);
+    REQUIRE(a.grids[0].directions.size() == 2);
+    const dg::GridDirection* along_columns = direction_along(a.grids[0], Vec3(0.368, 0, 0));
+    const dg::GridDirection* along_rows = direction_along(a.grids[0], Vec3(0, 0, 0.318));
+    REQUIRE(along_columns != nullptr);
+    REQUIRE(along_rows != nullptr);
+    // The exemplar's counts rebuild it; one more unit in each direction is the generator's shelf
+    // with one more column and one more row.
+    const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(a.prepared.model.mesh, a.grids[0], a.prepared.surface.eps());
+    std::vector<int> counts;
+    for (const dg::GridDirection& d : a.grids[0].directions) counts.push_back(d.count);
+    const dg::TriangleMesh rebuilt = dg::resize_grid(a.grids[0], pieces, counts, a.prepared.surface.eps());
+    CHECK(dg::test::hausdorff_distance(rebuilt, a.prepared.model.mesh) < 0.1 * a.prepared.surface.eps());
+    for (int& count : counts) ++count;
+    const dg::TriangleMesh resized = dg::resize_grid(a.grids[0], pieces, counts, a.prepared.surface.eps());
+    const dg::TriangleMesh larger = dg::assets::make_asset("shelf", {{"columns", columns + 1}, {"rows", rows + 1}}).mesh;
+    CHECK(resized.area() == Approx(larger.area()).epsilon(1e-3));
+    CHECK(dg::test::hausdorff_distance(resized, larger) < 0.1 * a.prepared.surface.eps());
+  }
 }
 
 TEST_CASE("facade(3 x 4) turned about a general axis: the same 2-grid along the turned pitches", "[grammar][grid]") {
