@@ -108,20 +108,19 @@ TEST_CASE("shelf(n x m): a 2-grid along the column and row pitches that resizes 
     CAPTURE(columns, rows);
     const Analysis a = analyze_asset("shelf", {{"columns", columns}, {"rows", rows}});
     REQUIRE(a.grids.size() == 1);
-    REQUIRE(a.grids[0].directions.size() == 2);
-    const dg::GridDirection* along_columns = direction_along(a.grids[0], Vec3(0.368, 0, 0));
-    const dg::GridDirection* along_rows = direction_along(a.grids[0], Vec3(0, 0, 0.318));
-    REQUIRE(along_columns != nullptr);
-    REQUIRE(along_rows != nullptr);
+    const dg::GridRule& grid = a.grids[0];
+    CHECK(grid.directions.size() == 2);
+    CHECK(direction_along(grid, Vec3(0.368, 0, 0)) != nullptr);
+    CHECK(direction_along(grid, Vec3(0, 0, 0.318)) != nullptr);
     // The exemplar's counts rebuild it; one more unit in each direction is the generator's shelf
     // with one more column and one more row.
-    const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(a.prepared.model.mesh, a.grids[0], a.prepared.surface.eps());
+    const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(a.prepared.model.mesh, grid, a.prepared.surface.eps());
     std::vector<int> counts;
-    for (const dg::GridDirection& d : a.grids[0].directions) counts.push_back(d.count);
-    const dg::TriangleMesh rebuilt = dg::resize_grid(a.grids[0], pieces, counts, a.prepared.surface.eps());
+    for (const dg::GridDirection& d : grid.directions) counts.push_back(d.count);
+    const dg::TriangleMesh rebuilt = dg::resize_grid(grid, pieces, counts, a.prepared.surface.eps());
     CHECK(dg::test::hausdorff_distance(rebuilt, a.prepared.model.mesh) < 0.1 * a.prepared.surface.eps());
     for (int& count : counts) ++count;
-    const dg::TriangleMesh resized = dg::resize_grid(a.grids[0], pieces, counts, a.prepared.surface.eps());
+    const dg::TriangleMesh resized = dg::resize_grid(grid, pieces, counts, a.prepared.surface.eps());
     const dg::TriangleMesh larger = dg::assets::make_asset("shelf", {{"columns", columns + 1}, {"rows", rows + 1}}).mesh;
     CHECK(resized.area() == Approx(larger.area()).epsilon(1e-3));
     CHECK(dg::test::hausdorff_distance(resized, larger) < 0.1 * a.prepared.surface.eps());
