@@ -80,7 +80,8 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
   const nlohmann::json& missing = summary.at("missing");
   REQUIRE(missing.is_array());
   REQUIRE(missing.size() == 1);
-  CHECK(missing[0].get<std::string>().find("docking sites whose docker") != std::string::npos);
+  CHECK(missing[0].get<std::string>().find("docking sites give no context-free production: the docker cut at one location "
+                                           "does not fit the hole at the other") != std::string::npos);
   CHECK(text.find("## Not yet built\n\n- ") != std::string::npos);
 
   // The gear's rotations leave no docking site: no picture, and the report names none.

@@ -58,9 +58,11 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
                                 "location give{} no context-free production",
                                 stats.sites_without_fit, one ? "" : "s", one ? "s" : ""));
   else if (stats.sites_without_fit > 0)
-    items.push_back(fmt::format("{} docking site{} whose docker, cut at one location, lies more than {:g} eps from the seam "
-                                "at the other give{} no context-free production",
-                                stats.sites_without_fit, one ? "" : "s", kSeamFitFraction, one ? "s" : ""));
+    items.push_back(fmt::format("{} docking site{} give{} no context-free production: the docker cut at one location "
+                                "does not fit the hole at the other (their seams lie more than {:g} eps apart, a little "
+                                "where repeats were modelled unevenly, wholly where the geometry around the two "
+                                "locations differs)",
+                                stats.sites_without_fit, one ? "" : "s", one ? "s" : "", kSeamFitFraction));
   return items;
 }
 
