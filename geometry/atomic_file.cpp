@@ -12,18 +12,26 @@
 namespace dg {
 namespace {
 
-// Why a file could not be opened for writing at `path`: its folder is missing or is a file,
-// else the system's reason (read right after the failed open).
+// Why a file could not be opened for writing at `path`: a file stands where its folder should
+// be, its folder is missing, else the system's reason (read right after the failed open).
 std::string why_not_writable(const std::filesystem::path& path) {
   const int reason = errno;
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (const std::optional<std::filesystem::path> file = file_in_the_way(folder)) return file->string() + " is a file, not a folder";
   std::error_code ignored;
   if (!std::filesystem::exists(folder, ignored)) return "the folder " + folder.string() + " does not exist";
-  if (!std::filesystem::is_directory(folder, ignored)) return folder.string() + " is a file, not a folder";
   return reason != 0 ? std::strerror(reason) : "unknown reason";
 }
 
 }  // namespace
+
+std::optional<std::filesystem::path> file_in_the_way(const std::filesystem::path& folder) {
+  for (std::filesystem::path part = folder; !part.empty() && part != part.parent_path(); part = part.parent_path()) {
+    std::error_code ignored;
+    if (std::filesystem::exists(part, ignored) && !std::filesystem::is_directory(part, ignored)) return part;
+  }
+  return std::nullopt;
+}
 
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
