@@ -4,6 +4,7 @@
 #include "geometry/material_classes.h"
 #include "geometry/model_io.h"
 #include "geometry/stopwatch.h"
+#include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
 
 #include <cmath>
@@ -19,7 +20,35 @@ void check_option(double value, const char* name) {
     throw InputError(std::string(name) + " must be a positive number of model units (0 or absent = default)");
 }
 
+// The voxel size prepare_model builds the surface with.
+double voxel_size(const BoundingBox& bounds, const PrepareOptions& options) {
+  if (options.eps > 0.0) return options.eps;
+  return (options.r > 0.0 ? options.r : default_radius(bounds)) / 4.0;
+}
+
+// Moves `model` by -origin where it lies beyond the voxel grid's reach; returns the origin.
+Vec3 move_near_origin(Model& model, const PrepareOptions& options) {
+  const BoundingBox bounds = model.bounds();
+  const Vec3 origin = far_model_origin(bounds, voxel_size(bounds, options));
+  if (origin.isZero()) return origin;
+  RigidTransform to_local;
+  to_local.translation = -origin;
+  if (model.is_point_cloud())
+    model.cloud = transformed(model.cloud, to_local);
+  else
+    model.mesh = transformed(model.mesh, to_local);
+  return origin;
+}
+
 }  // namespace
+
+Vec3 far_model_origin(const BoundingBox& bounds, double eps) {
+  if (bounds.empty() || !(eps > 0.0) || within_voxel_reach(bounds, eps)) return Vec3::Zero();
+  const double side = bounds.longest_side();
+  const double step = side > 0.0 ? std::pow(10.0, std::ceil(std::log10(side))) : 1.0;
+  const Vec3 middle = 0.5 * (bounds.min + bounds.max);
+  return (middle / step).array().round().matrix() * step;
+}
 
 PreparedModel prepare_model(const std::filesystem::path& path, const PrepareOptions& options,
                             const ProgressCallback& progress) {
@@ -51,6 +80,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
       voxel_options.material_classes = material_classes(model.materials, options.same_materials);
     if (model.is_point_cloud()) {
       prepared.cleaning = clean_point_cloud(model.cloud);
+      prepared.origin = move_near_origin(model, options);
       prepared.timings.push_back({"clean", clock.lap()});
       prepared.surface = build_voxel_surface(model.cloud, voxel_options, progress);
       prepared.cloud_sampling = point_statistics(model.cloud, kCloudStatisticsRadius * prepared.surface.eps());
@@ -58,6 +88,7 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
     } else {
       prepared.cleaning = clean_mesh(model.mesh);
       if (model.mesh.triangles.empty()) throw InputError("no triangles left after dropping degenerate ones");
+      prepared.origin = move_near_origin(model, options);
       // A fan edge that skips a vertex of the neighbouring face leaves a crack that exists only in
       // the topology; as an open edge it would become a feature line that breaks symmetries.
       if (prepared.cleaning.boundary_edges > 0)

@@ -40,7 +40,12 @@ struct PrepareOptions {
 };
 
 struct PreparedModel {
-  Model model;  ///< welded and cleaned
+  Model model;  ///< welded and cleaned, moved by -origin
+  /// Where the model file's coordinates put the model's own origin: every stage sees the file's
+  /// coordinates minus this. Zero unless the model lies so far from the file's origin that the
+  /// voxel grid could not reach it (a building in survey coordinates); then a round point near
+  /// the middle of its bounding box.
+  Vec3 origin = Vec3::Zero();
   CleaningReport cleaning;
   std::vector<FeatureEdge> feature_edges;  ///< empty for point clouds
   FeatureLines feature_lines;              ///< empty for point clouds
@@ -60,12 +65,18 @@ struct PreparedModel {
 };
 
 /// Loads, cleans (then splits open edges at T-junction vertices within 1e-9 of the bounding-box
-/// diagonal), finds feature lines and builds the voxel surface of a model file.
+/// diagonal), moves the model near the origin when it lies beyond the voxel grid's reach (see
+/// PreparedModel::origin), finds feature lines and builds the voxel surface of a model file.
 /// Throws InputError for unreadable/invalid files and impossible options (negative, NaN r).
 PreparedModel prepare_model(const std::filesystem::path& path, const PrepareOptions& options = {},
                             const ProgressCallback& progress = {});
 
 /// The same for a model already in memory (source_path is used in messages only).
 PreparedModel prepare_model(Model model, const PrepareOptions& options = {}, const ProgressCallback& progress = {});
+
+/// Zero when the voxel grid of size `eps` reaches all of `bounds`; else the point the model is
+/// moved to the origin from: the middle of the box rounded to a multiple of the smallest power
+/// of ten at least its longest side (10,000,020.5 ... 10,000,031.5 gives 10,000,000).
+Vec3 far_model_origin(const BoundingBox& bounds, double eps);
 
 }  // namespace dg

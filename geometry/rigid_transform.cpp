@@ -18,6 +18,10 @@ RigidTransform RigidTransform::after(const RigidTransform& first) const {
   return {rotation * first.rotation, rotation * first.translation + translation};
 }
 
+RigidTransform shifted_motion(const RigidTransform& t, const Vec3& origin) {
+  return {t.rotation, t.translation + origin - t.rotation * origin};
+}
+
 RigidTransform power(const RigidTransform& t, int k) {
   const RigidTransform step = k >= 0 ? t : t.inverse();
   RigidTransform result;

@@ -28,6 +28,10 @@ struct RigidTransform {
   Vec3 axis() const;
 };
 
+/// The motion `t`, given in a frame whose origin lies at `origin`, in the coordinates that frame
+/// was moved from: x -> t(x - origin) + origin (translations stay as they are).
+RigidTransform shifted_motion(const RigidTransform& t, const Vec3& origin);
+
 /// The motion applied k times (k < 0: its inverse applied -k times; k = 0: the identity).
 RigidTransform power(const RigidTransform& t, int k);
 

@@ -157,6 +157,13 @@ void build_records(std::size_t cells, std::vector<std::uint32_t>& offsets, std::
 
 }  // namespace
 
+bool within_voxel_reach(const BoundingBox& bounds, double eps) {
+  const double limit = static_cast<double>(kKeyBias - 2);
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(std::abs(bounds.min[axis] / eps) <= limit && std::abs(bounds.max[axis] / eps) <= limit)) return false;
+  return true;
+}
+
 // Friend of VoxelSurface: fills its private arrays.
 class VoxelSurfaceBuilder {
  public:
@@ -170,12 +177,10 @@ class VoxelSurfaceBuilder {
       throw InputError(fmt::format("voxel size {:.6g} is larger than the radius r = {:.6g}: a voxel must fit inside the "
                                    "r-neighbourhood (default voxel size r/4)",
                                    surface_.eps_, surface_.r_));
-    const double limit = static_cast<double>(kKeyBias - 2);
-    for (int axis = 0; axis < 3; ++axis)
-      if (std::abs(bounds.min[axis] / surface_.eps_) > limit || std::abs(bounds.max[axis] / surface_.eps_) > limit)
-        throw InputError("voxel size " + std::to_string(surface_.eps_) +
-                         " is too small for the model's coordinates (more than 2^20 voxels from the origin); "
-                         "pass a larger -r or --voxel");
+    if (!within_voxel_reach(bounds, surface_.eps_))
+      throw InputError("voxel size " + std::to_string(surface_.eps_) +
+                       " is too small for the model's coordinates (more than 2^20 voxels from the origin); "
+                       "pass a larger -r or --voxel");
   }
 
   VoxelSurface& surface() { return surface_; }

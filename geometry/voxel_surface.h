@@ -48,6 +48,10 @@ struct CellLine {
 /// Radius r from paper 001: 1.6 % of the longest bounding-box side.
 double default_radius(const BoundingBox& bounds);
 
+/// Whether every point of `bounds` lies within the voxel grid's reach at voxel size `eps`
+/// (fewer than 2^20 - 2 voxels from the origin along each axis).
+bool within_voxel_reach(const BoundingBox& bounds, double eps);
+
 struct VoxelSurfaceOptions {
   double r = 0.0;    ///< similarity radius in model units; 0 = default_radius(bounds)
   double eps = 0.0;  ///< voxel edge length in model units; 0 = r / 4

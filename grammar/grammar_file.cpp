@@ -241,6 +241,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                              {"axiom", axiom},
                              {"productions", productions}};
   if (!grammar.up_axis.empty()) document["up"] = grammar.up_axis;
+  if (!grammar.origin.isZero()) document["origin"] = {grammar.origin.x(), grammar.origin.y(), grammar.origin.z()};
   if (!grammar.materials.empty()) document["materials"] = materials_json(grammar.materials);
   add_material_runs(document, "exemplar_material_runs", grammar.exemplar, grammar);
   write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << '\n'; }, false);
@@ -347,6 +348,10 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
     grammar.up_axis = field<std::string>(document, "up", where);
     if (grammar.up_axis != "x" && grammar.up_axis != "y" && grammar.up_axis != "z")
       throw InputError(where + ": \"up\" must be \"x\", \"y\" or \"z\"");
+  }
+  if (document.contains("origin")) {
+    grammar.origin = vec3_field(document, "origin", where);
+    if (!grammar.origin.allFinite()) throw InputError(where + ": \"origin\" must hold three finite numbers");
   }
   if (document.contains("materials")) grammar.materials = read_materials_json(document.at("materials"), where);
   // A sidecar mesh with the material runs stored under `runs_key` in `owner` (none when absent).

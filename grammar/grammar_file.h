@@ -29,6 +29,10 @@ struct ShapeGrammar {
   std::string source_name;    ///< file name of the exemplar
   std::string source_hash;    ///< FNV-1a 64-bit hash of the exemplar file's bytes, hex
   double r = 0.0, eps = 0.0;  ///< model units
+  /// Where the source file's coordinates put the grammar's origin (PreparedModel::origin): the
+  /// exemplar, pieces, seams and motions are stored moved by -origin, and resize and generate
+  /// move what they build back by +origin. Zero unless the model lay beyond the voxel grid's reach.
+  Vec3 origin = Vec3::Zero();
   /// The exemplar's up axis for pictures, "x", "y" or "z" as given to `analyze --up`; empty
   /// when not given (pictures then guess it).
   std::string up_axis;
@@ -52,6 +56,13 @@ inline bool is_point_grammar(const ShapeGrammar& grammar) {
 /// Bounding box of the grammar's exemplar (its mesh, or its points for a point-cloud grammar).
 inline BoundingBox exemplar_bounds(const ShapeGrammar& grammar) {
   return is_point_grammar(grammar) ? grammar.exemplar_points.bounds() : grammar.exemplar.bounds();
+}
+
+/// The motion from the grammar's frame to the source file's coordinates: translation by origin.
+inline RigidTransform to_source_frame(const ShapeGrammar& grammar) {
+  RigidTransform motion;
+  motion.translation = grammar.origin;
+  return motion;
 }
 
 /// Hex FNV-1a 64-bit hash of a file's bytes (throws InputError when unreadable).

@@ -6,8 +6,10 @@
 #include "geometry/feature_edges.h"
 #include "geometry/feature_lines.h"
 #include "geometry/model_io.h"
+#include "geometry/prepared_model.h"
 #include "geometry/self_intersections.h"
 #include "geometry/stopwatch.h"
+#include "geometry/submesh.h"
 #include "geometry/voxel_surface.h"
 #include "symmetry/cloud_keypoints.h"
 
@@ -135,6 +137,20 @@ auto prepare_sides(Model exemplar, Model candidate, const VerifyOptions& options
   return std::make_tuple(std::move(exemplar_clean), std::move(candidate_clean), r);
 }
 
+// Moves both models by the same amount when the exemplar lies beyond the voxel grid's reach
+// (far_model_origin: a model in survey coordinates), as analyze does.
+void move_both_near_origin(Model& exemplar, Model& candidate, const VerifyOptions& options) {
+  const BoundingBox bounds = exemplar.bounds();
+  const double r = options.r > 0.0 ? options.r : default_radius(bounds);
+  RigidTransform to_local;
+  to_local.translation = -far_model_origin(bounds, r / 4.0);
+  if (to_local.translation.isZero()) return;
+  for (Model* model : {&exemplar, &candidate}) {
+    model->mesh = transformed(model->mesh, to_local);
+    model->cloud = transformed(model->cloud, to_local);
+  }
+}
+
 // The r-similarity check of both kinds: the estimated fraction against the option's minimum.
 CheckResult r_similarity_check(const RSimilarityResult& similarity, const VerifyOptions& options) {
   return {"r_similarity", similarity.fraction >= options.min_similar_fraction,
@@ -182,6 +198,7 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
                                  name_of(cloud_first ? exemplar : candidate, cloud_first ? "the exemplar" : "the candidate"),
                                  name_of(cloud_first ? candidate : exemplar, cloud_first ? "the candidate" : "the exemplar")));
   }
+  move_both_near_origin(exemplar, candidate, options);
   if (exemplar.is_point_cloud()) return verify_clouds(std::move(exemplar), std::move(candidate), options, progress);
   VerifyReport report;
   auto [exemplar_clean, candidate_clean, r] = prepare_sides(std::move(exemplar), std::move(candidate), options, progress,

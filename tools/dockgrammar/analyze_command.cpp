@@ -54,6 +54,7 @@ void add_analyze_command(CLI::App& app) {
     grammar.source_hash = file_hash(options->model.model_path);
     grammar.r = prepared.surface.r();
     grammar.eps = prepared.surface.eps();
+    grammar.origin = prepared.origin;
     grammar.up_axis = model_up_axis(options->model.model_path, options->up);
     grammar.exemplar = prepared.model.mesh;
     if (prepared.model.is_point_cloud()) grammar.exemplar_points = prepared.model.cloud;

@@ -7,6 +7,8 @@
 #include "geometry/model_io.h"
 #include "geometry/point_splats.h"
 #include "geometry/render_mesh.h"
+#include "geometry/submesh.h"
+#include "grammar/grammar_file.h"
 #include "synthesis/shape_derivation.h"
 #include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/number_checks.h"
@@ -105,10 +107,10 @@ void add_generate_command(CLI::App& app) {
       const std::string file = fmt::format("variant_{:05}.{}", index, format);
       const std::filesystem::path png = folder / fmt::format("variant_{:05}.png", index);
       if (points) {
-        write_point_cloud(folder / file, variant.points);
+        write_point_cloud(folder / file, transformed(variant.points, to_source_frame(grammar)));
         if (options->pictures) write_points_picture(png, variant.points.positions, {}, kSplatRadius * grammar.eps, picture);
       } else {
-        write_mesh_with_materials(folder / file, mesh, grammar.materials);
+        write_mesh_with_materials(folder / file, transformed(mesh, to_source_frame(grammar)), grammar.materials);
         if (options->pictures) write_mesh_picture(png, mesh, material_colors(mesh, grammar.materials), {}, picture);
       }
       nlohmann::json grids = nlohmann::json::object();

@@ -154,10 +154,14 @@ std::string whole_parts_note(const GridDirection& d, const TriangleMesh& mesh) {
   return parts.empty() ? "" : "; the planes pass by " + parts;
 }
 
-// A grid direction's generator: "t = ..." for a translation, the screw's angle, axis and rise.
-std::string grid_motion_text(const GridDirection& d) {
-  return describe_motion(d.motion, d.motion.angle() > 1e-9 ? "screw" : "translation");
+// A grid direction's generator in the model file's coordinates: "t = ..." for a translation,
+// the screw's angle, axis and rise.
+std::string grid_motion_text(const GridDirection& d, const Vec3& origin) {
+  return describe_motion(shifted_motion(d.motion, origin), d.motion.angle() > 1e-9 ? "screw" : "translation");
 }
+
+// Offset of a direction's first cut plane along its direction in the model file's coordinates.
+double first_cut(const GridDirection& d, const Vec3& origin) { return d.cut + d.direction.dot(origin); }
 
 std::string counts_text(const GridRule& grid) {
   std::string text;
@@ -375,6 +379,7 @@ std::string analysis_text(const AnalysisReport& report) {
   std::string out = fmt::format("model {}: r = {:.6g}, eps = {:.6g}\n", report.prepared.model.source_path,
                                 report.prepared.surface.r(), report.prepared.surface.eps());
   if (report.prepared.model.is_point_cloud()) out += fmt::format("point cloud: {}\n", cloud_density_text(report.prepared));
+  if (const std::string moved = origin_text(report.prepared); !moved.empty()) out += fmt::format("origin: {}\n", moved);
   if (report.symmetries.symmetries.empty())
     out += fmt::format("symmetries: none ({})\n", report.symmetries.note);
   else
@@ -385,7 +390,8 @@ std::string analysis_text(const AnalysisReport& report) {
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
     for (const GridDirection& d : grid.rule.directions)
       out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}{}\n",
-                         grid_motion_text(d), vec(d.direction), d.pitch, d.count, d.count == 1 ? "" : "s", d.cut,
+                         grid_motion_text(d, report.prepared.origin), vec(d.direction), d.pitch, d.count,
+                         d.count == 1 ? "" : "s", first_cut(d, report.prepared.origin),
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
   if (const std::string hint = tolerance_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
@@ -424,7 +430,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
       counts.push_back(d.count);
-      transforms.push_back(matrix_json(d.motion));
+      transforms.push_back(matrix_json(shifted_motion(d.motion, report.prepared.origin)));
       lowest.push_back(lowest_count(grid.rule, i));
       kept_whole.push_back({{"head", parts_among(d.whole_in_head, report.prepared.model.mesh)},
                             {"tail", parts_among(d.whole_in_tail, report.prepared.model.mesh)}});
@@ -447,6 +453,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
+          {"origin", {report.prepared.origin.x(), report.prepared.origin.y(), report.prepared.origin.z()}},
           {"tolerance", match_tolerances(report).offset_eps},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
                                                  {"points_per_voxel", points_per_voxel(report.prepared)},
@@ -492,8 +499,9 @@ void write_analysis_report(const AnalysisReport& report) {
                     "of the other's (`--tolerance`).\n\n",
                     match_tolerances(report).angle_degrees, match_tolerances(report).offset_eps);
   md += materials_paragraph(prepared);
+  if (const std::string moved = origin_text(prepared); !moved.empty()) md += moved + "\n\n";
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
-  md += symmetry_table(report.symmetries, 20);
+  md += symmetry_table(report.symmetries, 20, report.prepared.origin);
   md += "```\n\n## Grid rules\n\n";
   if (report.grammar.grids.empty())
     md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
@@ -506,7 +514,8 @@ void write_analysis_report(const AnalysisReport& report) {
         grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
-      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d), d.pitch, d.count, d.cut,
+      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d, report.prepared.origin),
+                        d.pitch, d.count, first_cut(d, report.prepared.origin),
                         d.head_units + 1, kept_units_text(d));
     }
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i)

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace dg::cli {
 namespace {
 
-std::string format_vector(const Vec3& v) { return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z()); }
+std::string format_vector(const Vec3& v) { return coordinates_text(v, 6); }
 
 /// "none", or the count and the names (the first eight, then how many more).
 std::string materials_text(const std::vector<Material>& materials) {
@@ -29,6 +32,22 @@ std::vector<std::vector<std::string>> material_groups(const PreparedModel& prepa
     if (names.size() > 1) groups.push_back(std::move(names));
   }
   return groups;
+}
+
+std::string coordinates_text(const Vec3& v, int digits) {
+  auto text = [&](double x) {
+    const int whole_digits = x == 0.0 ? 1 : static_cast<int>(std::floor(std::log10(std::abs(x)))) + 1;
+    return fmt::format("{:.{}g}", x, std::max(digits, whole_digits + 3));
+  };
+  return fmt::format("({}, {}, {})", text(v.x()), text(v.y()), text(v.z()));
+}
+
+std::string origin_text(const PreparedModel& prepared) {
+  if (prepared.origin.isZero()) return "";
+  return fmt::format("The model lies too far from its file's origin for the voxel grid: it was analysed moved by -{}; "
+                     "motions and cut planes are given in the file's coordinates, the grammar file keeps that origin, and "
+                     "resize and generate move what they build back.",
+                     coordinates_text(prepared.origin, 6));
 }
 
 std::string summary_text(const PreparedModel& prepared) {
@@ -59,6 +78,8 @@ std::string summary_text(const PreparedModel& prepared) {
   line("bounds", fmt::format("{} .. {}, size {}", format_vector(c.bounds.min), format_vector(c.bounds.max),
                              format_vector(c.bounds.size())));
   line("r, eps", fmt::format("{:.6g}, {:.6g} (model units)", prepared.surface.r(), prepared.surface.eps()));
+  if (!prepared.origin.isZero()) line("origin", fmt::format("{} (the model was moved by minus this for the voxel grid)",
+                                                            coordinates_text(prepared.origin, 6)));
   line("voxel surface", fmt::format("{} voxels, {} planes, {} lines, {} points, {:.1f} MB", stats.voxels, stats.planes,
                                     stats.lines, stats.points, static_cast<double>(stats.memory_bytes) / 1e6));
   if (c.point_cloud) {
@@ -91,6 +112,7 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
           {"materials", material_names(prepared.model.materials)},
           {"match_materials", prepared.materials_matched()},
           {"material_groups", material_groups(prepared)},
+          {"origin", {prepared.origin.x(), prepared.origin.y(), prepared.origin.z()}},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},
           {"voxel_surface",

@@ -14,9 +14,17 @@ namespace dg::cli {
 std::string summary_text(const PreparedModel& prepared);
 
 /// The same as JSON: {model, cleaning, materials, match_materials, material_groups (arrays of
-/// names), r, eps, voxel_surface, feature_lines, cloud_sampling (null for a mesh, else {spacing,
+/// names), origin (PreparedModel::origin), r, eps, voxel_surface, feature_lines, cloud_sampling (null for a mesh, else {spacing,
 /// noise, noise_wide}, model units), timings_s}.
 nlohmann::json summary_json(const PreparedModel& prepared);
+
+/// "(x, y, z)" with `digits` significant digits, more where a component reaches 10^5 and more
+/// (survey coordinates keep three places more than their whole digits: 412351.67, 5678901.23).
+std::string coordinates_text(const Vec3& v, int digits);
+
+/// One sentence saying the model was analysed moved near the origin (PreparedModel::origin) and
+/// what that means for the outputs; empty when it was not moved.
+std::string origin_text(const PreparedModel& prepared);
 
 /// The materials' names as a JSON array, in index order.
 nlohmann::json material_names(const std::vector<Material>& materials);

@@ -6,6 +6,7 @@
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
 #include "geometry/point_splats.h"
+#include "geometry/submesh.h"
 #include "grammar/grammar_file.h"
 #include "synthesis/several_grids.h"
 #include "tools/dockgrammar/output_folder.h"
@@ -77,7 +78,7 @@ void add_resize_command(CLI::App& app) {
     if (is_point_grammar(grammar)) {
       const PointCloud result = resize_grids_points(grammar, resizes);
       create_output_folder(output.parent_path());
-      write_point_cloud(output, result);  // rejects outputs other than .ply
+      write_point_cloud(output, transformed(result, to_source_frame(grammar)));  // rejects outputs other than .ply
       if (options->picture)
         write_points_picture(std::filesystem::path(output).replace_extension(".png"), result.positions, {},
                              kSplatRadius * grammar.eps, picture);
@@ -86,7 +87,7 @@ void add_resize_command(CLI::App& app) {
     }
     const TriangleMesh result = resize_grids(grammar, resizes);
     create_output_folder(output.parent_path());
-    write_mesh_with_materials(output, result, grammar.materials);
+    write_mesh_with_materials(output, transformed(result, to_source_frame(grammar)), grammar.materials);
     if (options->picture)
       write_mesh_picture(std::filesystem::path(output).replace_extension(".png"), result, material_colors(result, grammar.materials),
                          {}, picture);

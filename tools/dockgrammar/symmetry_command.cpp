@@ -2,6 +2,7 @@
 
 #include "tools/dockgrammar/commands.h"
 #include "tools/dockgrammar/model_options.h"
+#include "tools/dockgrammar/model_summary.h"
 #include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/pictures.h"
 #include "tools/dockgrammar/symmetry_report.h"
@@ -35,16 +36,19 @@ void add_symmetry_command(CLI::App& app) {
     if (!options->output.empty())
       write_symmetry_pictures(options->output, prepared, result, options->top, model_up_axis(options->model.model_path, options->up));
     if (options->model.json) {
-      nlohmann::json out = symmetry_json(result, options->top);
+      nlohmann::json out = symmetry_json(result, options->top, prepared.origin);
       out["model"] = prepared.model.source_path;
       out["r"] = prepared.surface.r();
       out["eps"] = prepared.surface.eps();
+      out["origin"] = {prepared.origin.x(), prepared.origin.y(), prepared.origin.z()};
       out["tolerance"] = cell_tolerances(result.region, prepared.model.is_point_cloud()).offset_eps;
       for (const StageTiming& t : prepared.timings) out["timings_s"][t.stage] = t.seconds;
       fmt::print("{}\n", out.dump(2));
     } else {
-      fmt::print("model {}: r = {:.6g}, eps = {:.6g}\n\n{}", prepared.model.source_path, prepared.surface.r(),
-                 prepared.surface.eps(), symmetry_table(result, options->top));
+      const std::string moved = origin_text(prepared);
+      fmt::print("model {}: r = {:.6g}, eps = {:.6g}\n{}\n{}", prepared.model.source_path, prepared.surface.r(),
+                 prepared.surface.eps(), moved.empty() ? "" : "origin: " + moved + "\n",
+                 symmetry_table(result, options->top, prepared.origin));
     }
   });
 }

@@ -2,6 +2,7 @@
 
 #include "geometry/cell_pieces.h"
 #include "geometry/model_io.h"
+#include "tools/dockgrammar/model_summary.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
 
@@ -15,12 +16,12 @@ namespace {
 
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
-// Components printed with 5 significant digits; rounding noise (below 1e-9 of the vector's
-// length) and -0 show as 0.
+// Components printed with 5 significant digits (more for survey coordinates, see
+// coordinates_text); rounding noise (below 1e-9 of the vector's length) and -0 show as 0.
 std::string vec(const Vec3& v) {
   const double noise = 1e-9 * v.norm();
   auto clean = [&](double x) { return std::abs(x) <= noise ? 0.0 : x; };
-  return fmt::format("({:.5g}, {:.5g}, {:.5g})", clean(v.x()), clean(v.y()), clean(v.z()));
+  return coordinates_text(Vec3(clean(v.x()), clean(v.y()), clean(v.z())), 5);
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ nlohmann::json matrix_json(const RigidTransform& t) {
   return rows;
 }
 
-std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
+std::string symmetry_table(const SymmetryResult& result, std::size_t top, const Vec3& origin) {
   if (result.symmetries.empty()) return fmt::format("no symmetries found: {}\n", result.note);
   std::string out = fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", "#", "kind", "symmetric area",
                                 "r-symmetric area", "family", "motion");
@@ -49,7 +50,7 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
     out += fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", i + 1, s.kind,
                        fmt::format("{:.4g} ({:.1f}%)", s.symmetric_area, 100.0 * s.symmetric_fraction),
                        fmt::format("{:.4g} ({:.1f}%)", s.r_symmetric_area, 100.0 * s.r_symmetric_fraction),
-                       fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(s.transform, s.kind));
+                       fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(shifted_motion(s.transform, origin), s.kind));
   }
   out += "\nfamilies of the symmetries above (generator, repeats found):\n";
   std::vector<bool> shown(result.families.size(), false);
@@ -63,17 +64,17 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top) {
     const SymmetryFamily& family = result.families[f];
     out += fmt::format("  F{:<3} {:<11} x{:<3}{}  {}\n", f + 1, family.kind, family.count,
                        family.order > 0 ? fmt::format(" (order {})", family.order) : std::string(),
-                       describe_motion(family.generator, family.kind));
+                       describe_motion(shifted_motion(family.generator, origin), family.kind));
   }
   return out;
 }
 
-nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
+nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, const Vec3& origin) {
   nlohmann::json symmetries = nlohmann::json::array();
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
     const DetectedSymmetry& s = result.symmetries[i];
     const SymmetryFamily& family = result.families[s.family];
-    symmetries.push_back({{"matrix", matrix_json(s.transform)},
+    symmetries.push_back({{"matrix", matrix_json(shifted_motion(s.transform, origin))},
                           {"kind", s.kind},
                           {"angle_degrees", degrees(s.screw.angle)},
                           {"axis", {s.screw.axis.x(), s.screw.axis.y(), s.screw.axis.z()}},
@@ -88,14 +89,14 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top) {
                           {"pinned_fraction", s.pinned_fraction},
                           {"family",
                            {{"index", s.family},
-                            {"generator", matrix_json(family.generator)},
+                            {"generator", matrix_json(shifted_motion(family.generator, origin))},
                             {"count", family.count},
                             {"order", family.order},
                             {"power", s.power}}}});
   }
   nlohmann::json families = nlohmann::json::array();
   for (const SymmetryFamily& f : result.families)
-    families.push_back({{"kind", f.kind}, {"generator", matrix_json(f.generator)}, {"count", f.count}, {"order", f.order},
+    families.push_back({{"kind", f.kind}, {"generator", matrix_json(shifted_motion(f.generator, origin))}, {"count", f.count}, {"order", f.order},
                         {"members", f.members}, {"powers", f.powers}});
   nlohmann::json timings = nlohmann::json::object();
   for (const StageTiming& t : result.timings) timings[t.stage] = t.seconds;

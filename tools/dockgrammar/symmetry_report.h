@@ -18,11 +18,13 @@ std::string describe_motion(const RigidTransform& t, const std::string& kind);
 /// A rigid motion as a 4x4 row-major matrix (rows of four numbers), model units.
 nlohmann::json matrix_json(const RigidTransform& t);
 
-/// Readable table of the first `top` symmetries (kind, motion, areas, family).
-std::string symmetry_table(const SymmetryResult& result, std::size_t top);
+/// Readable table of the first `top` symmetries (kind, motion, areas, family), motions in the
+/// model file's coordinates (`origin`: PreparedModel::origin).
+std::string symmetry_table(const SymmetryResult& result, std::size_t top, const Vec3& origin);
 
-/// {"symmetries": [...], "families": [...], "stats": {...}, "timings_s": {...}} for the first `top`.
-nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top);
+/// {"symmetries": [...], "families": [...], "stats": {...}, "timings_s": {...}} for the first
+/// `top`, motions in the model file's coordinates (`origin`: PreparedModel::origin).
+nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, const Vec3& origin);
 
 /// Writes DIR/symmetry_NN.ply (vertex colours) and DIR/symmetry_NN.png for the first `top`
 /// symmetries: r-symmetric area red, symmetric but within r of its border pink, the image of
