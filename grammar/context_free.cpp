@@ -32,6 +32,12 @@ using Cells = std::vector<std::uint32_t>;
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 // Seam cuts move vertices within this fraction of eps onto their planes (no slivers thinner).
 constexpr double kCutSnapFraction = 1e-5;
+// A plane seam that grazes other geometry is moved by up to kPlaneShiftSteps steps of
+// kPlaneShiftStepFraction eps either way; its first location's seam curve must then lie within
+// kCurveOnPlaneFraction eps of it.
+constexpr int kPlaneShiftSteps = 4;
+constexpr double kPlaneShiftStepFraction = 0.25;
+constexpr double kCurveOnPlaneFraction = 1e-3;
 // Locations of a class tried as the one the others' seams must fit (the first, and when it
 // leaves some out, up to this many in all; the chandelier has classes of 37).
 constexpr std::size_t kMaxReferenceTrials = 16;
@@ -294,6 +300,51 @@ class Builder {
     }
   }
 
+  // A plane through a band can also graze geometry beyond the docker that the band only partly
+  // holds (a rail leaving a post just above the post's band, where the voxel grid's phase puts
+  // the band a layer higher): the first location's seam curve then follows that geometry's edges
+  // off the plane, and the other locations' curves cannot fit it. Moves such a plane of class k
+  // along its normal, a quarter voxel at a time up to one voxel either way (nearest first), to
+  // the first offset where that curve lies on the plane and every location's docker stays on its
+  // positive side. False, with the plane unmoved, when the curve lies on the plane already or no
+  // such offset exists.
+  bool move_plane_off_other_geometry(std::size_t k) {
+    SeamSurface& seam = class_seam_[k];
+    const Node& root = nodes_[class_nodes_[k].front()];
+    if (seam.kind != SeamSurface::Kind::plane || curve_on_plane(own_seam_curve(root), seam)) return false;
+    const double start = seam.offset, step = kPlaneShiftStepFraction * surface_.eps();
+    for (int i = 1; i <= 2 * kPlaneShiftSteps; ++i) {
+      const int steps = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);  // 1, -1, 2, -2, ...
+      seam.offset = start + steps * step;
+      if (docker_sides_hold(k) && curve_on_plane(own_seam_curve(root), seam)) return true;
+    }
+    seam.offset = start;
+    return false;
+  }
+
+  // Whether every location of class k keeps its docker on the positive side of the class's plane.
+  bool docker_sides_hold(std::size_t k) const {
+    const SeamSurface& seam = class_seam_[k];
+    for (std::size_t i : class_nodes_[k]) {
+      const Node& n = nodes_[i];
+      Plane placed = Plane{seam.normal, seam.offset}.moved(n.frame);
+      const Vec3 normal = placed.normal;
+      if (!orient_towards_docker(surface_, n.docker, mask_of(n.site, surface_.cell_count()), placed) ||
+          placed.normal.dot(normal) < 0)
+        return false;
+    }
+    return true;
+  }
+
+  // Whether a seam curve (in the seam's frame) is not empty and lies on the plane `seam`.
+  bool curve_on_plane(const std::vector<Segment>& curve, const SeamSurface& seam) const {
+    const double tolerance = kCurveOnPlaneFraction * surface_.eps();
+    for (const Segment& segment : curve)
+      for (const Vec3& p : segment)
+        if (std::abs(seam.normal.dot(p) - seam.offset) > tolerance) return false;
+    return !curve.empty();
+  }
+
   // The least-squares plane of class k's first band (in the non-terminal frame), when every
   // location's band lies within 1.5 `flatness` of it (placed by its frame) and its docker on
   // the positive side.
@@ -343,21 +394,24 @@ class Builder {
   // the most others fit (the metal gate's class of 12 whose first fits none, 7 of the others
   // fit one another). A class left with fewer than two locations (a non-terminal needs an
   // alternative) loses them all. Returns each class's largest misfit kept.
+  // `only`: one flag per class, the classes to judge (empty: all).
   template <class CurveOf>
-  std::vector<double> keep_fitting_locations(const CurveOf& curve_of, double limit) {
+  std::vector<double> keep_fitting_locations(const CurveOf& curve_of, double limit, const std::vector<char>& only = {}) {
     // An empty curve never fits: seam_misfit is infinite when the reference has no match.
     return keep_locations(curve_of, [&](const std::vector<Segment>& curve, const std::vector<Segment>& reference) {
       return seam_misfit(curve, reference, limit, surface_.eps());
-    }, limit);
+    }, limit, only);
   }
 
   // keep_fitting_locations for any seam shape: `shape_of(node)` gives what a location's seam
   // looks like in the non-terminal's frame (nothing fits an empty one), `misfit(shape,
   // reference shape)` how far it lies from the reference location's (model units).
   template <class ShapeOf, class Misfit>
-  std::vector<double> keep_locations(const ShapeOf& shape_of, const Misfit& misfit_of, double limit) {
+  std::vector<double> keep_locations(const ShapeOf& shape_of, const Misfit& misfit_of, double limit,
+                                     const std::vector<char>& only = {}) {
     std::vector<double> largest(class_nodes_.size(), 0.0);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      if (!only.empty() && !only[k]) continue;
       const std::vector<std::size_t>& members = class_nodes_[k];
       using Shape = decltype(shape_of(nodes_[members.front()]));
       std::vector<Shape> shapes(members.size());
@@ -459,13 +513,60 @@ class Builder {
   // than twice the fit limit from their class's reference location's are dropped, and so are
   // classes left with fewer than two locations, so the whole model is not cut for locations
   // check_fit would drop (it decides on the cumulative cut, within the limit itself).
+  // A plane class that loses locations this way while its plane grazes other geometry gets one
+  // more try with the plane moved off it (move_plane_off_other_geometry), its locations as they
+  // were before; the try stays when it keeps more locations.
   void screen_fit() {
+    struct Placement {
+      bool kept;
+      RigidTransform frame, frame_inverse;
+      double aligned_by;
+      std::vector<Segment> curve;
+    };
+    auto placement = [&](std::size_t i, const std::vector<std::vector<Segment>>& curves) {
+      const Node& n = nodes_[i];
+      return Placement{n.kept, n.frame, n.frame_inverse, n.aligned_by, curves[i]};
+    };
+    auto place = [&](std::size_t i, const Placement& p, std::vector<std::vector<Segment>>& curves) {
+      Node& n = nodes_[i];
+      n.kept = p.kept;
+      n.frame = p.frame;
+      n.frame_inverse = p.frame_inverse;
+      n.aligned_by = p.aligned_by;
+      curves[i] = p.curve;
+    };
     std::vector<std::vector<Segment>> curves(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i)
       if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
-    align_frames(curves);
-    keep_fitting_locations([&](const Node& n) { return curves[static_cast<std::size_t>(&n - nodes_.data())]; },
-                           2.0 * kSeamFitFraction * surface_.eps());
+    std::vector<Placement> before;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) before.push_back(placement(i, curves));
+    auto screen = [&](const std::vector<char>& only) {
+      align_frames(curves, only);
+      keep_fitting_locations([&](const Node& n) { return curves[static_cast<std::size_t>(&n - nodes_.data())]; },
+                             2.0 * kSeamFitFraction * surface_.eps(), only);
+    };
+    screen({});
+    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      const std::vector<std::size_t>& members = class_nodes_[k];
+      auto kept = [&] { return std::count_if(members.begin(), members.end(), [&](std::size_t i) { return nodes_[i].kept; }); };
+      const auto kept_first = kept();
+      const auto kept_before = std::count_if(members.begin(), members.end(), [&](std::size_t i) { return before[i].kept; });
+      if (kept_first == kept_before) continue;
+      const double offset = class_seam_[k].offset;
+      if (!move_plane_off_other_geometry(k)) continue;
+      std::vector<Placement> first;
+      for (std::size_t i : members) first.push_back(placement(i, curves));
+      for (std::size_t i : members) {
+        place(i, before[i], curves);
+        if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
+      }
+      std::vector<char> only(class_nodes_.size(), 0);
+      only[k] = 1;
+      screen(only);
+      if (kept() > kept_first) continue;
+      class_seam_[k].offset = offset;
+      for (std::size_t m = 0; m < members.size(); ++m) place(members[m], first[m], curves);
+    }
   }
 
   // Hand-placed repeats sit a little off the motion that relates them (the table football's
@@ -475,9 +576,12 @@ class Builder {
   // carries its curve onto the first (align_seam_curve, within kSeamAlignReachFraction eps and
   // kSeamAlignMaxAngle), and its curve is cut again along the moved seam; the fit screen then
   // decides. `curves[i]`: node i's own seam curve in its non-terminal's frame, updated.
-  void align_frames(std::vector<std::vector<Segment>>& curves) {
+  // `only`: one flag per class, the classes to align (empty: all).
+  void align_frames(std::vector<std::vector<Segment>>& curves, const std::vector<char>& only = {}) {
     const double eps = surface_.eps(), reach = kSeamAlignReachFraction * eps, limit = kSeamFitFraction * eps;
-    for (const std::vector<std::size_t>& members : class_nodes_) {
+    for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
+      if (!only.empty() && !only[k]) continue;
+      const std::vector<std::size_t>& members = class_nodes_[k];
       const std::vector<Segment>& reference = curves[members.front()];
       if (!nodes_[members.front()].kept || reference.empty()) continue;
       const double reference_length = curve_length(reference);
