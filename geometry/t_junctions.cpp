@@ -213,6 +213,41 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
   return splits;
 }
 
+std::size_t drop_hanging_slivers(TriangleMesh& mesh, double tolerance) {
+  auto key = [](std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+  };
+  std::unordered_map<std::uint64_t, std::uint32_t> users;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++users[key(t[k], t[(k + 1) % 3])];
+  std::vector<char> drop(mesh.triangles.size(), 0);
+  std::size_t dropped = 0;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Triangle& t = mesh.triangles[i];
+    for (int k = 0; k < 3 && !drop[i]; ++k) {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      if (users[key(a, b)] < 3 || users[key(b, c)] != 1 || users[key(c, a)] != 1) continue;
+      const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
+      const Vec3 ab = pb - pa;
+      const double s = std::clamp((pc - pa).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+      if ((pa + s * ab - pc).norm() > tolerance) continue;
+      drop[i] = 1;
+      ++dropped;
+    }
+  }
+  if (dropped == 0) return 0;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    if (drop[i]) continue;
+    mesh.triangles[kept] = mesh.triangles[i];
+    if (mesh.has_materials()) mesh.materials[kept] = mesh.materials[i];
+    ++kept;
+  }
+  mesh.triangles.resize(kept);
+  if (!mesh.materials.empty()) mesh.materials.resize(kept);
+  return dropped;
+}
+
 std::size_t close_triangular_holes(TriangleMesh& mesh, double max_perimeter) {
   // Directed edges with how many triangles use them and one that does: an open edge is one only
   // one triangle uses and whose reverse none uses.

@@ -602,27 +602,46 @@ class Builder {
     }
   }
 
-  // Whether the box around triangle t of the cut model holds a band cell of `node` (true for
-  // triangles spanning many voxels).
+  // Whether the box around triangle t of the cut model holds a band cell of `node`, or, moved to
+  // the class's first location, one of that location's band cells (true for triangles spanning
+  // many voxels). Where a motion does not carry the voxel grid onto itself, the bands of two
+  // locations are voxelized differently; the first location's band, moved, is the same at all.
   bool near_band(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
+    const Node& root = nodes_[class_nodes_[node.klass].front()];
+    BoundingBox mapped;
+    for (const Vec3& p : mesh.corners(t)) mapped.add(node.frame_inverse.apply(p));
+    if (near_cells(mapped, root.site)) return true;
     BoundingBox box;
     for (const Vec3& p : mesh.corners(t)) box.add(p);
+    return near_cells(box, node.site);
+  }
+
+  // Whether a cell of `site` (ascending) lies among the voxels the box `box` touches (true for
+  // boxes of more than 64 voxels).
+  bool near_cells(const BoundingBox& box, const Cells& site) const {
     const VoxelCoord lo = surface_.voxel_of(box.min), hi = surface_.voxel_of(box.max);
     if (static_cast<std::int64_t>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64) return true;
     for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int32_t j = lo[1]; j <= hi[1]; ++j)
         for (std::int32_t k = lo[2]; k <= hi[2]; ++k) {
           const std::int64_t cell = surface_.find({i, j, k});
-          if (cell >= 0 && std::binary_search(node.site.begin(), node.site.end(), static_cast<std::uint32_t>(cell))) return true;
+          if (cell >= 0 && std::binary_search(site.begin(), site.end(), static_cast<std::uint32_t>(cell))) return true;
         }
     return false;
   }
 
-  // Whether triangle t of the cut model lies in the docker of `node` (on the docker side of its
-  // seam where it crosses the band).
+  // Whether triangle t of the cut model lies in the docker of `node`: where its centroid, moved to
+  // the class's first location, falls in that location's band, on the docker side of the seam
+  // (so every location's seam neighbourhood is judged alike, whatever its own voxels); elsewhere
+  // in the location's own docker cells, or in its own band on the docker side. The dockers
+  // themselves may differ in extent from location to location (only their seams match).
   bool in_docker(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
     const auto corners = mesh.corners(t);
     const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
+    const Node& root = nodes_[class_nodes_[node.klass].front()];
+    const std::int64_t at_root = nearest_cell(surface_, node.frame_inverse.apply(centroid));
+    if (at_root >= 0 && std::binary_search(root.site.begin(), root.site.end(), static_cast<std::uint32_t>(at_root)))
+      return on_docker_side(class_seam_[node.klass], surface_, class_docker_side_[node.klass], node.frame_inverse, centroid);
     const std::int64_t found = nearest_cell(surface_, centroid);
     if (found < 0) return false;
     const auto cell = static_cast<std::uint32_t>(found);

@@ -84,6 +84,7 @@ TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pie
   }
   resolve_t_junctions(result, grid_weld_tolerance(grid, eps), &seam_copies, kSeamWeldFloorFraction * eps);
   close_triangular_holes(result, kSeamHoleFraction * eps);
+  drop_hanging_slivers(result, grid_weld_tolerance(grid, eps));
   return merge_flat_faces(result);
 }
 

@@ -163,6 +163,7 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
   if (!points && options.weld_seams) {
     resolve_t_junctions(result.mesh, seam_weld_tolerance(grammar, eps), &seam_copies, kSeamWeldFloorFraction * eps);
     close_triangular_holes(result.mesh, kSeamHoleFraction * eps);
+    drop_hanging_slivers(result.mesh, seam_weld_tolerance(grammar, eps));
     result.mesh = merge_flat_faces(result.mesh);
   }
   return result;

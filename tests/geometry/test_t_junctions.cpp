@@ -4,6 +4,7 @@
 #include "geometry/t_junctions.h"
 
 #include "geometry/random.h"
+#include "geometry/submesh.h"
 #include "geometry/topology.h"
 #include "support/shapes.h"
 
@@ -271,4 +272,31 @@ TEST_CASE("labelled weld: seams that misfit by up to half the tolerance close", 
     failures += closed_into_rectangle(mesh) ? 0 : 1;
   }
   CHECK(failures == 0);
+}
+
+TEST_CASE("a sliver hanging off an edge of a closed box by its two open edges is dropped", "[geometry][t_junctions]") {
+  // Left where a weld kept a seam vertex a hair apart from the corner it should have joined:
+  // the box's edge gains a third user, and two open edges run to the stray vertex.
+  dg::TriangleMesh box = dg::test::make_box(dg::Vec3(0, 0, 0), dg::Vec3(1, 1, 1));
+  box.materials.assign(box.triangles.size(), 0);
+  const dg::Triangle& first = box.triangles[0];
+  const std::uint32_t a = first[0], b = first[1];
+  const Vec3 stray = box.positions[b] + 1e-4 * (box.positions[a] - box.positions[b]) + Vec3(0, 0, 1e-7);
+  auto with_sliver = [&](const Vec3& apex) {
+    dg::TriangleMesh mesh = box;
+    mesh.positions.push_back(apex);
+    mesh.triangles.push_back({b, a, static_cast<std::uint32_t>(mesh.positions.size() - 1)});
+    mesh.materials.push_back(0);
+    return mesh;
+  };
+  dg::TriangleMesh near = with_sliver(stray);
+  REQUIRE_FALSE(dg::is_closed_and_oriented(near));
+  CHECK(dg::drop_hanging_slivers(near, 1e-3) == 1);
+  CHECK(near.triangles.size() == 12);
+  CHECK(near.materials.size() == 12);
+  CHECK(dg::is_closed_and_oriented(dg::without_unused_vertices(near)));
+  // A corner farther from the edge than the tolerance is a part of its own: it stays.
+  dg::TriangleMesh far = with_sliver(box.positions[b] + Vec3(0.3, 0.3, 0.3));
+  CHECK(dg::drop_hanging_slivers(far, 1e-3) == 0);
+  CHECK(far.triangles.size() == 13);
 }
