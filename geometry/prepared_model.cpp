@@ -98,10 +98,8 @@ PreparedModel prepare_model(Model model, const PrepareOptions& options, const Pr
       report_progress(progress, "feature lines", 0.0);
       prepared.feature_edges =
           find_feature_edges(model.mesh, options.sharp_angle_degrees, voxel_options.material_classes);
-      const double r = options.r > 0.0 ? options.r : default_radius(model.mesh.bounds());
-      const double eps = options.eps > 0.0 ? options.eps : r / 4.0;
-      prepared.feature_lines =
-          extract_feature_lines(model.mesh, prepared.feature_edges, eps, options.corner_angle_degrees);
+      prepared.feature_lines = extract_feature_lines(model.mesh, prepared.feature_edges,
+                                                     voxel_size(model.mesh.bounds(), options), options.corner_angle_degrees);
       prepared.timings.push_back({"feature lines", clock.lap()});
       prepared.surface = build_voxel_surface(model.mesh, prepared.feature_edges, voxel_options, progress);
       prepared.timings.push_back({"voxel surface", clock.lap()});

@@ -2,6 +2,7 @@
 
 #include "geometry/cell_key.h"
 #include "geometry/slab_cut.h"
+#include "geometry/topology.h"
 #include "geometry/vertex_weld.h"
 
 #include <algorithm>
@@ -214,37 +215,25 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
 }
 
 std::size_t drop_hanging_slivers(TriangleMesh& mesh, double tolerance) {
-  auto key = [](std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-  };
-  std::unordered_map<std::uint64_t, std::uint32_t> users;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++users[key(t[k], t[(k + 1) % 3])];
-  std::vector<char> drop(mesh.triangles.size(), 0);
+  const EdgeUsers edges = edge_users(mesh);
+  // Triangles using the edge that starts at corner k of triangle t.
+  auto users = [&](std::size_t t, int k) { return edges.group_end[3 * t + k] - edges.group_begin[3 * t + k]; };
   std::size_t dropped = 0;
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-    const Triangle& t = mesh.triangles[i];
-    for (int k = 0; k < 3 && !drop[i]; ++k) {
-      const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      if (users[key(a, b)] < 3 || users[key(b, c)] != 1 || users[key(c, a)] != 1) continue;
-      const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      if (users(t, k) < 3 || users(t, (k + 1) % 3) != 1 || users(t, (k + 2) % 3) != 1) continue;
+      const Vec3 &pa = mesh.positions[tri[k]], &pb = mesh.positions[tri[(k + 1) % 3]];
+      const Vec3& pc = mesh.positions[tri[(k + 2) % 3]];
       const Vec3 ab = pb - pa;
       const double s = std::clamp((pc - pa).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
       if ((pa + s * ab - pc).norm() > tolerance) continue;
-      drop[i] = 1;
+      mesh.triangles[t] = {tri[0], tri[0], tri[0]};  // dropped below with the degenerate ones
       ++dropped;
+      break;
     }
   }
-  if (dropped == 0) return 0;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-    if (drop[i]) continue;
-    mesh.triangles[kept] = mesh.triangles[i];
-    if (mesh.has_materials()) mesh.materials[kept] = mesh.materials[i];
-    ++kept;
-  }
-  mesh.triangles.resize(kept);
-  if (!mesh.materials.empty()) mesh.materials.resize(kept);
+  if (dropped > 0) drop_repeated_corners(mesh);
   return dropped;
 }
 

@@ -29,7 +29,8 @@ std::size_t close_triangular_holes(TriangleMesh& mesh, double max_perimeter);
 /// Drops every triangle hanging by one edge off an edge that three or more triangles use, its
 /// two other edges open, when its third corner lies within `tolerance` (model units) of that
 /// edge: a sliver left where a weld kept a seam vertex apart from the one it should have joined
-/// (its edge then has its two proper users besides). Returns the number dropped.
+/// (its edge then has its two proper users besides). Triangles with a repeated corner go too.
+/// Returns the number of slivers dropped.
 std::size_t drop_hanging_slivers(TriangleMesh& mesh, double tolerance);
 
 /// One flag per vertex of `mesh`: 1 when the vertex lies on an open edge (an edge used by one

@@ -273,13 +273,16 @@ class Builder {
   // rest at every location however the band is shaped (plane_between_sides), else the voxel
   // faces inside the band. A plane adds triangles only along its seam curve; voxel faces cut
   // the band's triangles into staircases.
+  // The first location of class k: the one its seam and reference cells come from.
+  const Node& first_location(std::size_t k) const { return nodes_[class_nodes_[k].front()]; }
+
   void choose_seams() {
     const double flatness = 2.0 * surface_.eps();
     class_seam_.assign(class_nodes_.size(), SeamSurface{});
     class_docker_side_.assign(class_nodes_.size(), {});
     class_face_index_.clear();
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
-      const Node& root = nodes_[class_nodes_[k].front()];
+      const Node& root = first_location(k);
       std::optional<Plane> plane = flat_band_plane(k, flatness);
       if (!plane) {
         std::vector<SeamLocation> locations;
@@ -310,24 +313,24 @@ class Builder {
   // such offset exists.
   bool move_plane_off_other_geometry(std::size_t k) {
     SeamSurface& seam = class_seam_[k];
-    const Node& root = nodes_[class_nodes_[k].front()];
+    const Node& root = first_location(k);
     if (seam.kind != SeamSurface::Kind::plane || curve_on_plane(own_seam_curve(root), seam)) return false;
     const double start = seam.offset, step = kPlaneShiftStepFraction * surface_.eps();
     for (int i = 1; i <= 2 * kPlaneShiftSteps; ++i) {
       const int steps = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);  // 1, -1, 2, -2, ...
       seam.offset = start + steps * step;
-      if (docker_sides_hold(k) && curve_on_plane(own_seam_curve(root), seam)) return true;
+      if (docker_sides_hold(k, Plane{seam.normal, seam.offset}) && curve_on_plane(own_seam_curve(root), seam)) return true;
     }
     seam.offset = start;
     return false;
   }
 
-  // Whether every location of class k keeps its docker on the positive side of the class's plane.
-  bool docker_sides_hold(std::size_t k) const {
-    const SeamSurface& seam = class_seam_[k];
+  // Whether every location of class k keeps its docker on the positive side of `plane` (in the
+  // non-terminal's frame), placed by the location's frame.
+  bool docker_sides_hold(std::size_t k, const Plane& plane) const {
     for (std::size_t i : class_nodes_[k]) {
       const Node& n = nodes_[i];
-      Plane placed = Plane{seam.normal, seam.offset}.moved(n.frame);
+      Plane placed = plane.moved(n.frame);
       const Vec3 normal = placed.normal;
       if (!orient_towards_docker(surface_, n.docker, mask_of(n.site, surface_.cell_count()), placed) ||
           placed.normal.dot(normal) < 0)
@@ -349,19 +352,15 @@ class Builder {
   // location's band lies within 1.5 `flatness` of it (placed by its frame) and its docker on
   // the positive side.
   std::optional<Plane> flat_band_plane(std::size_t k, double flatness) const {
-    const Node& root = nodes_[class_nodes_[k].front()];
+    const Node& root = first_location(k);
     std::optional<Plane> plane = fit_band_plane(surface_, root.site, flatness);
     if (!plane || !orient_towards_docker(surface_, root.docker, mask_of(root.site, surface_.cell_count()), *plane)) return std::nullopt;
     for (std::size_t i : class_nodes_[k]) {
-      const Node& n = nodes_[i];
-      Plane placed = plane->moved(n.frame);
-      bool flat = true;
-      for (std::uint32_t c : n.site) flat = flat && std::abs(placed.distance(surface_.centre(c))) <= 1.5 * flatness;
-      const Vec3 normal = placed.normal;
-      if (!flat || !orient_towards_docker(surface_, n.docker, mask_of(n.site, surface_.cell_count()), placed) ||
-          placed.normal.dot(normal) < 0)
-        return std::nullopt;
+      const Plane placed = plane->moved(nodes_[i].frame);
+      for (std::uint32_t c : nodes_[i].site)
+        if (std::abs(placed.distance(surface_.centre(c))) > 1.5 * flatness) return std::nullopt;
     }
+    if (!docker_sides_hold(k, *plane)) return std::nullopt;
     return plane;
   }
 
@@ -517,29 +516,28 @@ class Builder {
   // more try with the plane moved off it (move_plane_off_other_geometry), its locations as they
   // were before; the try stays when it keeps more locations.
   void screen_fit() {
+    // What the screen (align_frames, keep_locations) changes in a node.
     struct Placement {
       bool kept;
       RigidTransform frame, frame_inverse;
       double aligned_by;
-      std::vector<Segment> curve;
     };
-    auto placement = [&](std::size_t i, const std::vector<std::vector<Segment>>& curves) {
+    auto placement = [&](std::size_t i) {
       const Node& n = nodes_[i];
-      return Placement{n.kept, n.frame, n.frame_inverse, n.aligned_by, curves[i]};
+      return Placement{n.kept, n.frame, n.frame_inverse, n.aligned_by};
     };
-    auto place = [&](std::size_t i, const Placement& p, std::vector<std::vector<Segment>>& curves) {
+    auto place = [&](std::size_t i, const Placement& p) {
       Node& n = nodes_[i];
       n.kept = p.kept;
       n.frame = p.frame;
       n.frame_inverse = p.frame_inverse;
       n.aligned_by = p.aligned_by;
-      curves[i] = p.curve;
     };
     std::vector<std::vector<Segment>> curves(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i)
       if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
     std::vector<Placement> before;
-    for (std::size_t i = 0; i < nodes_.size(); ++i) before.push_back(placement(i, curves));
+    for (std::size_t i = 0; i < nodes_.size(); ++i) before.push_back(placement(i));
     auto screen = [&](const std::vector<char>& only) {
       align_frames(curves, only);
       keep_fitting_locations([&](const Node& n) { return curves[static_cast<std::size_t>(&n - nodes_.data())]; },
@@ -555,17 +553,21 @@ class Builder {
       const double offset = class_seam_[k].offset;
       if (!move_plane_off_other_geometry(k)) continue;
       std::vector<Placement> first;
-      for (std::size_t i : members) first.push_back(placement(i, curves));
+      std::vector<std::vector<Segment>> first_curves;
+      for (std::size_t i : members) first.push_back(placement(i)), first_curves.push_back(curves[i]);
       for (std::size_t i : members) {
-        place(i, before[i], curves);
-        if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
+        place(i, before[i]);
+        curves[i] = nodes_[i].kept ? own_seam_curve(nodes_[i]) : std::vector<Segment>{};
       }
       std::vector<char> only(class_nodes_.size(), 0);
       only[k] = 1;
       screen(only);
       if (kept() > kept_first) continue;
       class_seam_[k].offset = offset;
-      for (std::size_t m = 0; m < members.size(); ++m) place(members[m], first[m], curves);
+      for (std::size_t m = 0; m < members.size(); ++m) {
+        place(members[m], first[m]);
+        curves[members[m]] = std::move(first_curves[m]);
+      }
     }
   }
 
@@ -607,7 +609,7 @@ class Builder {
   // many voxels). Where a motion does not carry the voxel grid onto itself, the bands of two
   // locations are voxelized differently; the first location's band, moved, is the same at all.
   bool near_band(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
-    const Node& root = nodes_[class_nodes_[node.klass].front()];
+    const Node& root = first_location(node.klass);
     BoundingBox mapped;
     for (const Vec3& p : mesh.corners(t)) mapped.add(node.frame_inverse.apply(p));
     if (near_cells(mapped, root.site)) return true;
@@ -638,7 +640,7 @@ class Builder {
   bool in_docker(const TriangleMesh& mesh, const Node& node, std::size_t t) const {
     const auto corners = mesh.corners(t);
     const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-    const Node& root = nodes_[class_nodes_[node.klass].front()];
+    const Node& root = first_location(node.klass);
     const std::int64_t at_root = nearest_cell(surface_, node.frame_inverse.apply(centroid));
     if (at_root >= 0 && std::binary_search(root.site.begin(), root.site.end(), static_cast<std::uint32_t>(at_root)))
       return on_docker_side(class_seam_[node.klass], surface_, class_docker_side_[node.klass], node.frame_inverse, centroid);

@@ -86,6 +86,11 @@ TEST_CASE("far origin: analyze, resize and verify a fence in survey coordinates 
                                   turn[1][2].get<double>() * middle.z() + turn[1][3].get<double>(),
                               0.0);
   CHECK((moved_middle - dg::Vec3(middle.x(), middle.y(), 0.0)).norm() < 1e-6);
+  // Its axis point and translation are given in the same coordinates as its matrix.
+  const nlohmann::json& first = symmetries["symmetries"][0];
+  CHECK(first["axis_point"][0].get<double>() == Approx(middle.x()).margin(1e-6));
+  CHECK(first["axis_point"][1].get<double>() == Approx(middle.y()).margin(1e-6));
+  for (int row = 0; row < 3; ++row) CHECK(first["translation"][row].get<double>() == Approx(turn[row][3].get<double>()));
 
   // Resized, the far grammar builds the local grammar's fence back at the survey location.
   const std::filesystem::path far_resized = folder / "far6.obj", local_resized = folder / "local6.obj";

@@ -453,7 +453,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
   return {{"model", report.prepared.model.source_path},
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
-          {"origin", {report.prepared.origin.x(), report.prepared.origin.y(), report.prepared.origin.z()}},
+          {"origin", coordinates_json(report.prepared.origin)},
           {"tolerance", match_tolerances(report).offset_eps},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
                                                  {"points_per_voxel", points_per_voxel(report.prepared)},

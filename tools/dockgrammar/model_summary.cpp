@@ -42,6 +42,8 @@ std::string coordinates_text(const Vec3& v, int digits) {
   return fmt::format("({}, {}, {})", text(v.x()), text(v.y()), text(v.z()));
 }
 
+nlohmann::json coordinates_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
 std::string origin_text(const PreparedModel& prepared) {
   if (prepared.origin.isZero()) return "";
   return fmt::format("The model lies too far from its file's origin for the voxel grid: it was analysed moved by -{}; "
@@ -112,7 +114,7 @@ nlohmann::json summary_json(const PreparedModel& prepared) {
           {"materials", material_names(prepared.model.materials)},
           {"match_materials", prepared.materials_matched()},
           {"material_groups", material_groups(prepared)},
-          {"origin", {prepared.origin.x(), prepared.origin.y(), prepared.origin.z()}},
+          {"origin", coordinates_json(prepared.origin)},
           {"r", prepared.surface.r()},
           {"eps", prepared.surface.eps()},
           {"voxel_surface",

@@ -22,6 +22,9 @@ nlohmann::json summary_json(const PreparedModel& prepared);
 /// (survey coordinates keep three places more than their whole digits: 412351.67, 5678901.23).
 std::string coordinates_text(const Vec3& v, int digits);
 
+/// [x, y, z] as JSON.
+nlohmann::json coordinates_json(const Vec3& v);
+
 /// One sentence saying the model was analysed moved near the origin (PreparedModel::origin) and
 /// what that means for the outputs; empty when it was not moved.
 std::string origin_text(const PreparedModel& prepared);

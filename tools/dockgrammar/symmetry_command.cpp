@@ -40,7 +40,7 @@ void add_symmetry_command(CLI::App& app) {
       out["model"] = prepared.model.source_path;
       out["r"] = prepared.surface.r();
       out["eps"] = prepared.surface.eps();
-      out["origin"] = {prepared.origin.x(), prepared.origin.y(), prepared.origin.z()};
+      out["origin"] = coordinates_json(prepared.origin);
       out["tolerance"] = cell_tolerances(result.region, prepared.model.is_point_cloud()).offset_eps;
       for (const StageTiming& t : prepared.timings) out["timings_s"][t.stage] = t.seconds;
       fmt::print("{}\n", out.dump(2));

@@ -74,13 +74,14 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, cons
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
     const DetectedSymmetry& s = result.symmetries[i];
     const SymmetryFamily& family = result.families[s.family];
-    symmetries.push_back({{"matrix", matrix_json(shifted_motion(s.transform, origin))},
+    const RigidTransform motion = shifted_motion(s.transform, origin);  // in the model file's coordinates
+    symmetries.push_back({{"matrix", matrix_json(motion)},
                           {"kind", s.kind},
                           {"angle_degrees", degrees(s.screw.angle)},
                           {"axis", {s.screw.axis.x(), s.screw.axis.y(), s.screw.axis.z()}},
-                          {"axis_point", {s.screw.axis_point.x(), s.screw.axis_point.y(), s.screw.axis_point.z()}},
+                          {"axis_point", coordinates_json(s.screw.axis_point + origin)},
                           {"slide", s.screw.slide},
-                          {"translation", {s.transform.translation.x(), s.transform.translation.y(), s.transform.translation.z()}},
+                          {"translation", coordinates_json(motion.translation)},
                           {"support", s.support},
                           {"symmetric_area", s.symmetric_area},
                           {"r_symmetric_area", s.r_symmetric_area},
