@@ -123,7 +123,8 @@ std::size_t drop_childless_alternatives(ContextFreeGrammar& grammar, const std::
   return static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
 }
 
-double jaccard(const Cells& a, const Cells& b) {
+// Cells listed in both ascending lists.
+std::size_t shared_cells(const Cells& a, const Cells& b) {
   std::size_t shared = 0;
   for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
     if (a[i] == b[j]) {
@@ -134,8 +135,19 @@ double jaccard(const Cells& a, const Cells& b) {
       ++j;
     }
   }
+  return shared;
+}
+
+double jaccard(const Cells& a, const Cells& b) {
+  const std::size_t shared = shared_cells(a, b);
   const std::size_t together = a.size() + b.size() - shared;
   return together == 0 ? 1.0 : static_cast<double>(shared) / static_cast<double>(together);
+}
+
+// Share of the shorter list's cells that the other list holds too (1 when either is empty).
+double share_of_smaller(const Cells& a, const Cells& b) {
+  const std::size_t smaller = std::min(a.size(), b.size());
+  return smaller == 0 ? 1.0 : static_cast<double>(shared_cells(a, b)) / static_cast<double>(smaller);
 }
 
 bool share_a_cell(const Cells& a, const Cells& b) {
@@ -208,13 +220,19 @@ class Builder {
   }
 
  private:
+  // The location of a docker and its site: an earlier one when the dockers are the same cells
+  // (Jaccard 0.8) and the smaller site lies in the other (0.8 of its cells: one motion's band
+  // can be a part of another's around the same docker), else a new one (kNone past
+  // max_nodes). A big docker ending a board's thickness higher still shares most cells with
+  // the lower one, and its band half the lower band's cells at some phases of the voxel grid
+  // (the shelf's boards); the two are other seams.
   std::size_t add_node(const Cells& site, const Cells& docker) {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       const Node& n = nodes_[i];
       const double size_ratio = static_cast<double>(std::min(n.docker.size(), docker.size())) /
                                 static_cast<double>(std::max<std::size_t>(1, std::max(n.docker.size(), docker.size())));
       if (size_ratio < 0.8) continue;
-      if (jaccard(n.docker, docker) >= 0.8 && jaccard(n.site, site) >= 0.5) return i;
+      if (jaccard(n.docker, docker) >= 0.8 && share_of_smaller(n.site, site) >= 0.8) return i;
     }
     if (nodes_.size() >= options_.max_nodes) return kNone;
     Node node;
@@ -228,6 +246,10 @@ class Builder {
     for (const DockingSite& s : sites.sites) {
       if (s.slippable) {
         ++stats.sites_slippable;
+        continue;
+      }
+      if (s.stray_seam) {
+        ++stats.sites_stray_seam;
         continue;
       }
       const std::size_t a = add_node(s.site, s.docker);

@@ -99,6 +99,9 @@ struct ContextFreeStats {
   std::size_t sites_used = 0;        ///< docking sites that entered the grammar
   std::size_t sites_slippable = 0;   ///< dropped: the band slides along itself
   std::size_t sites_without_fit = 0;  ///< dropped: the docker cut at one location does not fit the other
+  /// Dropped: the image of the site also runs where nothing is cut off (DockingSite::stray_seam),
+  /// so the seam at the second location would not be the first's, moved.
+  std::size_t sites_stray_seam = 0;
   std::size_t nodes = 0;             ///< distinct site locations
   /// Kept locations whose frame was aligned on the seam of their non-terminal's first location
   /// (placed a little off the motion relating them), and the farthest such a seam moved (model

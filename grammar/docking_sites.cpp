@@ -110,6 +110,26 @@ Cells ring_around(const VoxelSurface& surface, const Cells& inside, const std::v
   return ring;
 }
 
+// Whether a connected part of `band` (26-adjacency within the band) has no cell next to a cell
+// of `docker_mask`: a stretch of seam that borders nothing the operation replaces.
+bool has_part_away_from(const VoxelSurface& surface, const Cells& band, const std::vector<char>& docker_mask) {
+  std::vector<char> unseen = mask_of(band, surface.cell_count());
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t start : band) {
+    if (!unseen[start]) continue;
+    unseen[start] = 0;
+    queue.assign(1, start);
+    bool borders = false;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+      for (std::uint32_t n : surface.neighbours(queue[head])) {
+        borders = borders || docker_mask[n];
+        if (unseen[n]) unseen[n] = 0, queue.push_back(n);
+      }
+    if (!borders) return true;
+  }
+  return false;
+}
+
 double area_of(const VoxelSurface& surface, const Cells& cells) {
   double area = 0.0;
   for (std::uint32_t c : cells) area += surface.area(c);
@@ -179,6 +199,7 @@ std::optional<DockingSite> evaluate(const MotionContext& m, const Cells& docker,
   s.secondary_docker = secondary;
   s.docker_area = area_of(surface, docker);
   s.secondary_docker_area = area_of(surface, secondary);
+  s.stray_seam = has_part_away_from(surface, touched_by_image, mask_of(secondary, n));
   return s;
 }
 

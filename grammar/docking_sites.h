@@ -54,6 +54,9 @@ struct DockingSite {
   /// T(D) would overlap geometry that stays in place (away from the seam): the operation is
   /// marked; synthesis re-checks placed pieces exactly.
   bool collides = false;
+  /// A connected part of T(site) borders no cell of D': the secondary site also runs where
+  /// nothing is cut off, so it is not the seam of D' alone.
+  bool stray_seam = false;
   std::size_t slippable_motions = 0;  ///< slippage dimension of the band
   bool slippable = false;
   double docker_area = 0.0;            ///< model units^2

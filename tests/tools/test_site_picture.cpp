@@ -75,13 +75,14 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
     listed.insert(fs::path(png.get<std::string>()).filename().string());
   }
   CHECK(listed == std::set<std::string>{"fence_4.grid1.png", "fence_4.rules.png", "fence_4.sites.png"});
-  // What the fence shows but analyze could not use: only docking sites whose dockers do not fit.
-  // Its translation gives its grid, and its posts' and rails' quarter turns close full turns.
+  // What the fence shows but analyze could not use: only docking sites whose site's image also
+  // runs where nothing is replaced. Its translation gives its grid, and its posts' and rails'
+  // quarter turns close full turns.
   const nlohmann::json& missing = summary.at("missing");
   REQUIRE(missing.is_array());
   REQUIRE(missing.size() == 1);
-  CHECK(missing[0].get<std::string>().find("docking sites give no context-free production: the docker cut at one location "
-                                           "does not fit the hole at the other") != std::string::npos);
+  CHECK(missing[0].get<std::string>().find("docking sites give no context-free production: part of the site's image borders "
+                                           "nothing the operation replaces") != std::string::npos);
   CHECK(text.find("## Not yet built\n\n- ") != std::string::npos);
 
   // The gear's rotations leave no docking site: no picture, and the report names none.

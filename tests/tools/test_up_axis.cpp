@@ -38,6 +38,12 @@ bool taller_than_wide(const fs::path& png) {
   return height > width;
 }
 
+// Height over width of the drawn model.
+double aspect(const fs::path& png) {
+  const auto [width, height] = occupied_size(png);
+  return static_cast<double>(height) / width;
+}
+
 }  // namespace
 
 // The spiral stairs stand along +z (2 x 2 wide, 3.16 tall) and are thinnest along x and y
@@ -61,10 +67,11 @@ TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resi
   }
   REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --pictures -q -o " + (folder / "stored").string(), folder).status == 0);
   CHECK(taller_than_wide(folder / "stored" / "variant_00000.png"));
-  // An explicit --up wins over the stored axis.
+  // An explicit --up wins over the stored axis: the same variant lies down (a variant's steps
+  // can reach farther round than the exemplar's, so it is only flatter than upright).
   REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --pictures --up y -q -o " + (folder / "y").string(), folder).status ==
           0);
-  CHECK_FALSE(taller_than_wide(folder / "y" / "variant_00000.png"));
+  CHECK(aspect(folder / "y" / "variant_00000.png") < 0.9 * aspect(folder / "stored" / "variant_00000.png"));
   REQUIRE(dg::test::run_cli("resize " + grammar + " --grid grid1=16 --picture -o " + (folder / "stairs_16.obj").string(), folder)
               .status == 0);
   CHECK(taller_than_wide(folder / "stairs_16.png"));

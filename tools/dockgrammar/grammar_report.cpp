@@ -74,11 +74,18 @@ std::string model_stem(const AnalysisReport& report) { return report.grammar_pat
 // more give no pair of locations (...)"; empty when there are none.
 std::string unpaired_sites_text(const AnalysisReport& report) {
   const ContextFreeStats& stats = report.context_free;
-  const std::size_t accounted = stats.sites_used + stats.sites_without_fit + stats.sites_slippable;
+  const std::size_t accounted = stats.sites_used + stats.sites_without_fit + stats.sites_slippable + stats.sites_stray_seam;
   if (report.docking.sites.size() <= accounted) return "";
   return fmt::format("; {} more give no pair of locations (the docker and its image fall on one location, or the "
                      "limit of {} locations, largest dockers first, was reached)",
                      report.docking.sites.size() - accounted, ContextFreeOptions{}.max_nodes);
+}
+
+// "; 4 more have a site whose image also runs where nothing is replaced" when such sites were
+// dropped; empty otherwise.
+std::string stray_seam_text(const ContextFreeStats& stats) {
+  if (stats.sites_stray_seam == 0) return "";
+  return fmt::format("; {} more have a site whose image also runs where nothing is replaced", stats.sites_stray_seam);
 }
 
 // "N non-terminal(s) were dropped because ..." for non-terminals no derivation reaches.
@@ -208,6 +215,7 @@ nlohmann::json docking_sites_json(const AnalysisReport& report) {
                      {"secondary_docker_fraction", s.secondary_docker_area / total},
                      {"regions", s.regions},
                      {"collides", s.collides},
+                     {"stray_seam", s.stray_seam},
                      {"slippable_motions", s.slippable_motions},
                      {"slippable", s.slippable}});
   return sites;
@@ -273,7 +281,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
     return md + fmt::format("No context-free production was built: {} sites slide along themselves (dropped, as in the "
                             "paper), {} have a docker that, cut at one location, does not fit the seam of the other{}.\n\n",
                             report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                            unpaired_sites_text(report) + dropped_rules_text(report.context_free));
+                            stray_seam_text(report.context_free) + unpaired_sites_text(report) + dropped_rules_text(report.context_free));
   const bool points = cf.of_points();
   md += points ? "| non-terminal | exemplar sites | productions |\n|---|---|---|\n"
                : "| non-terminal | exemplar sites | productions | seam misfit (eps) |\n|---|---|---|---|\n";
@@ -403,7 +411,7 @@ std::string analysis_text(const AnalysisReport& report) {
   if (cf.empty())
     out += fmt::format("context-free rules: none ({} of the docking sites slide along themselves, {} have dockers that do not fit each other's seam{})\n",
                        report.context_free.sites_slippable, report.context_free.sites_without_fit,
-                       unpaired_sites_text(report) + dropped_rules_text(report.context_free));
+                       stray_seam_text(report.context_free) + unpaired_sites_text(report) + dropped_rules_text(report.context_free));
   else
     out += fmt::format("context-free rules: {} non-terminal(s), {} production(s) plus the axiom ({})\n", cf.nonterminals.size(),
                        cf.productions.size(), generate_rules_text(report));

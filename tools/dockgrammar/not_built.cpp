@@ -63,6 +63,12 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
                                 "where repeats were modelled unevenly, wholly where the geometry around the two "
                                 "locations differs)",
                                 stats.sites_without_fit, one ? "" : "s", one ? "s" : "", kSeamFitFraction));
+  if (stats.sites_stray_seam > 0)
+    items.push_back(fmt::format("{} docking site{} give{} no context-free production: part of the site's image borders "
+                                "nothing the operation replaces, so the seam at the second location is not the first's "
+                                "moved",
+                                stats.sites_stray_seam, stats.sites_stray_seam == 1 ? "" : "s",
+                                stats.sites_stray_seam == 1 ? "s" : ""));
   return items;
 }
 
