@@ -55,6 +55,13 @@ Analysed analyse(const std::string& asset, const nlohmann::json& parameters) {
   return analyse_model(std::move(model));
 }
 
+// The model in `file` moved up (+z) by `lift` model units, analysed.
+Analysed analyse_lifted(const std::filesystem::path& file, double lift) {
+  dg::Model moved = dg::read_model(file);
+  for (Eigen::Vector3d& p : moved.mesh.positions) p.z() += lift;
+  return analyse_model(std::move(moved));
+}
+
 // How many docking sites of `analysed` have operation `kind`.
 std::ptrdiff_t operations(const Analysed& analysed, dg::OperationKind kind) {
   return std::count_if(analysed.sites.sites.begin(), analysed.sites.sites.end(),
@@ -345,9 +352,7 @@ TEST_CASE("context-free grammar: the shelf moved up by half a voxel keeps its th
   // below it shared half their cells at one phase, so they were taken for one location.
   const std::filesystem::path file = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models/shelf_3x4.obj";
   const Analysed reference = analyse_model(dg::read_model(file));
-  dg::Model moved = dg::read_model(file);
-  for (Eigen::Vector3d& p : moved.mesh.positions) p.z() += 0.56 * reference.prepared.surface.eps();
-  const Analysed a = analyse_model(std::move(moved));
+  const Analysed a = analyse_lifted(file, 0.56 * reference.prepared.surface.eps());
   for (const Analysed* analysed : {&reference, &a}) {
     // The stray sites are those half turns: the docker holds the top board and the plinth
     // (generator: plinth 0.07 high, top board from 1.349 up), and T(site) runs round both.
@@ -383,9 +388,7 @@ TEST_CASE("context-free grammar: the spiral stairs' docking sites give productio
   // a site's cells.
   const std::filesystem::path file = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models/spiral_stairs_12.obj";
   const Analysed reference = analyse_model(dg::read_model(file));
-  dg::Model moved = dg::read_model(file);
-  for (Eigen::Vector3d& p : moved.mesh.positions) p.z() += 0.4 * reference.prepared.surface.eps();
-  const Analysed a = analyse_model(std::move(moved));
+  const Analysed a = analyse_lifted(file, 0.4 * reference.prepared.surface.eps());
   for (const Analysed* analysed : {&reference, &a}) {
     CHECK(analysed->stats.sites_without_fit <= 4);
     CHECK(analysed->grammar.nonterminals.size() >= 6);
