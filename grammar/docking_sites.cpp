@@ -208,8 +208,9 @@ OperationKind classify(const DockingSite& s, std::size_t cell_count, double cont
   const std::vector<char> secondary = mask_of(s.secondary_docker, cell_count);
   const bool secondary_inside = share_inside(s.secondary_docker, docker) >= containment;
   const bool docker_inside = share_inside(s.docker, secondary) >= containment;
-  if (secondary_inside && s.secondary_docker.size() < s.docker.size()) return OperationKind::insert;
-  if (docker_inside && s.docker.size() < s.secondary_docker.size()) return OperationKind::remove;
+  // Dockers inside each other are the same piece: swapping them grows or shrinks nothing.
+  if (secondary_inside && !docker_inside) return OperationKind::insert;
+  if (docker_inside && !secondary_inside) return OperationKind::remove;
   return OperationKind::replace;
 }
 

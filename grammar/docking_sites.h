@@ -11,7 +11,7 @@
 // T(site) does not split the model, neighbouring non-symmetric regions are added to the docker
 // (the dependent pieces of the paper's Figure 5) until it does, or the candidate is dropped.
 // The operation replaces D' by T(D): insert when D' lies inside D, delete when D lies inside D',
-// replace otherwise. Both T and T^-1 of every examined symmetry are used, which gives the
+// replace otherwise, also when each lies inside the other (the same piece, nothing grows). Both T and T^-1 of every examined symmetry are used, which gives the
 // paper's secondary operations as primary operations of the inverse.
 
 #include "geometry/prepared_model.h"
