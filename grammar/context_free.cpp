@@ -138,12 +138,6 @@ std::size_t shared_cells(const Cells& a, const Cells& b) {
   return shared;
 }
 
-double jaccard(const Cells& a, const Cells& b) {
-  const std::size_t shared = shared_cells(a, b);
-  const std::size_t together = a.size() + b.size() - shared;
-  return together == 0 ? 1.0 : static_cast<double>(shared) / static_cast<double>(together);
-}
-
 // Share of the shorter list's cells that the other list holds too (1 when either is empty).
 double share_of_smaller(const Cells& a, const Cells& b) {
   const std::size_t smaller = std::min(a.size(), b.size());
@@ -234,8 +228,10 @@ class Builder {
       const double size_ratio = static_cast<double>(std::min(n.docker.size(), docker.size())) /
                                 static_cast<double>(std::max<std::size_t>(1, std::max(n.docker.size(), docker.size())));
       if (size_ratio < 0.8) continue;
-      const std::size_t docker_difference = n.docker.size() + docker.size() - 2 * shared_cells(n.docker, docker);
-      if (jaccard(n.docker, docker) >= 0.8 && 2 * docker_difference <= std::min(n.site.size(), site.size()) &&
+      const std::size_t shared = shared_cells(n.docker, docker);
+      const std::size_t together = n.docker.size() + docker.size() - shared;
+      const double jaccard = together == 0 ? 1.0 : static_cast<double>(shared) / static_cast<double>(together);
+      if (jaccard >= 0.8 && 2 * (together - shared) <= std::min(n.site.size(), site.size()) &&
           share_of_smaller(n.site, site) >= 0.8)
         return i;
     }

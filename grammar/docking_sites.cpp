@@ -113,21 +113,13 @@ Cells ring_around(const VoxelSurface& surface, const Cells& inside, const std::v
 // Whether a connected part of `band` (26-adjacency within the band) has no cell next to a cell
 // of `docker_mask`: a stretch of seam that borders nothing the operation replaces.
 bool has_part_away_from(const VoxelSurface& surface, const Cells& band, const std::vector<char>& docker_mask) {
-  std::vector<char> unseen = mask_of(band, surface.cell_count());
-  std::vector<std::uint32_t> queue;
-  for (std::uint32_t start : band) {
-    if (!unseen[start]) continue;
-    unseen[start] = 0;
-    queue.assign(1, start);
-    bool borders = false;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-      for (std::uint32_t n : surface.neighbours(queue[head])) {
-        borders = borders || docker_mask[n];
-        if (unseen[n]) unseen[n] = 0, queue.push_back(n);
-      }
-    if (!borders) return true;
-  }
-  return false;
+  std::size_t parts = 0;
+  const std::vector<std::int32_t> part = label_components(surface, mask_of(band, surface.cell_count()), parts);
+  std::vector<char> borders(parts, 0);
+  for (std::uint32_t c : band)
+    for (std::uint32_t n : surface.neighbours(c))
+      if (docker_mask[n]) borders[static_cast<std::size_t>(part[c])] = 1;
+  return std::find(borders.begin(), borders.end(), 0) != borders.end();
 }
 
 double area_of(const VoxelSurface& surface, const Cells& cells) {

@@ -29,7 +29,9 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 
 namespace {
 
@@ -55,11 +57,14 @@ Analysed analyse(const std::string& asset, const nlohmann::json& parameters) {
   return analyse_model(std::move(model));
 }
 
-// The model in `file` moved up (+z) by `lift` model units, analysed.
-Analysed analyse_lifted(const std::filesystem::path& file, double lift) {
+// The bundled model `name` (assets/models/NAME.obj) analysed as committed and moved up (+z) by
+// `eps_fraction` of its eps.
+std::pair<Analysed, Analysed> analyse_in_place_and_lifted(const std::string& name, double eps_fraction) {
+  const std::filesystem::path file = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models" / (name + ".obj");
+  Analysed reference = analyse_model(dg::read_model(file));
   dg::Model moved = dg::read_model(file);
-  for (Eigen::Vector3d& p : moved.mesh.positions) p.z() += lift;
-  return analyse_model(std::move(moved));
+  for (Eigen::Vector3d& p : moved.mesh.positions) p.z() += eps_fraction * reference.prepared.surface.eps();
+  return {std::move(reference), analyse_model(std::move(moved))};
 }
 
 // How many docking sites of `analysed` have operation `kind`.
@@ -350,9 +355,7 @@ TEST_CASE("context-free grammar: the shelf moved up by half a voxel keeps its th
   // board as well as round the plinth, which alone is cut off, and that site, taken for the
   // plinth's, merged the plinth's two non-terminals. And the lowest board's sites above and
   // below it shared half their cells at one phase, so they were taken for one location.
-  const std::filesystem::path file = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models/shelf_3x4.obj";
-  const Analysed reference = analyse_model(dg::read_model(file));
-  const Analysed a = analyse_lifted(file, 0.56 * reference.prepared.surface.eps());
+  const auto [reference, a] = analyse_in_place_and_lifted("shelf_3x4", 0.56);
   for (const Analysed* analysed : {&reference, &a}) {
     // The stray sites are those half turns: the docker holds the top board and the plinth
     // (generator: plinth 0.07 high, top board from 1.349 up), and T(site) runs round both.
@@ -392,9 +395,7 @@ TEST_CASE("context-free grammar: the spiral stairs' docking sites give productio
   // one non-terminal whose seams could not fit: 158 docking sites without a production in place,
   // 144 moved up by 0.4 eps, 2 by 0.8 eps. Dockers of one location now differ by less than half
   // a site's cells.
-  const std::filesystem::path file = std::filesystem::path(DOCKGRAMMAR_SOURCE_DIR) / "assets/models/spiral_stairs_12.obj";
-  const Analysed reference = analyse_model(dg::read_model(file));
-  const Analysed a = analyse_lifted(file, 0.4 * reference.prepared.surface.eps());
+  const auto [reference, a] = analyse_in_place_and_lifted("spiral_stairs_12", 0.4);
   for (const Analysed* analysed : {&reference, &a}) {
     CHECK(analysed->stats.sites_without_fit <= 4);
     CHECK(analysed->grammar.nonterminals.size() >= 6);
