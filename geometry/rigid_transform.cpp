@@ -37,7 +37,10 @@ Mat4 RigidTransform::matrix() const {
 }
 
 double RigidTransform::angle() const {
-  return std::acos(std::clamp((rotation.trace() - 1.0) / 2.0, -1.0, 1.0));
+  // sin from the antisymmetric part, cos from the trace: unlike acos of the trace alone, exact for
+  // angles below 1e-8 (acos cannot resolve 1 - angle^2 / 2 there).
+  const Vec3 twice_sine_axis(rotation(2, 1) - rotation(1, 2), rotation(0, 2) - rotation(2, 0), rotation(1, 0) - rotation(0, 1));
+  return std::atan2(0.5 * twice_sine_axis.norm(), std::clamp((rotation.trace() - 1.0) / 2.0, -1.0, 1.0));
 }
 
 Vec3 RigidTransform::axis() const {
@@ -50,8 +53,12 @@ ScrewParameters screw_parameters(const RigidTransform& transform) {
   ScrewParameters screw;
   screw.angle = transform.angle();
   screw.axis = transform.axis();
-  if (screw.angle < 1e-12) {
+  // Below 1e-9 radians the axis point, about |t| / angle away, loses the translation to rounding
+  // (1e-16 of that distance): such a motion is taken as its translation.
+  if (screw.angle < 1e-9) {
+    screw.angle = 0.0;
     screw.slide = transform.translation.norm();
+    screw.axis = screw.slide > 0.0 ? Vec3(transform.translation / screw.slide) : Vec3::UnitZ();
     return screw;
   }
   screw.slide = screw.axis.dot(transform.translation);

@@ -154,20 +154,36 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
       power = generator.after(power);
       if (same_motion(power, RigidTransform{}, centre, eps)) break;  // back to the identity
       const RigidTransform canonical = canonical_motion(power, 0.5 * eps);
-      bool known = false;
-      for (const DetectedSymmetry& s : result.symmetries) known = known || same_motion(s.transform, canonical, centre, eps);
-      if (known) continue;
+      auto listed_near = [&](const RigidTransform& motion) {
+        return std::find_if(result.symmetries.begin(), result.symmetries.end(),
+                            [&](const DetectedSymmetry& s) { return same_motion(s.transform, motion, centre, eps); });
+      };
+      const auto known = listed_near(canonical);
+      // A listed motion within eps of the power that only slides may have drifted along a wall
+      // off the power (the Quaternius bank's 109.26 for 2 x 53.99: its columns do not match).
+      const bool drifted_slide = known != result.symmetries.end() && known->pinned_fraction < options.min_r_symmetric_fraction &&
+                                 !same_motion(known->transform, canonical, centre, 0.25 * eps);
+      if (known != result.symmetries.end() && !drifted_slide) continue;
       Candidate probe = refine_candidate(canonical, keypoints, candidate_options);
       if (prepared.model.is_point_cloud()) {
         refine_cloud_candidate(probe);
         if (barely_moves(probe)) continue;  // refined onto a slide or the identity
       }
       if (probe.matches.size() < candidate_options.min_support) break;
-      bool refined_known = false;  // ICP may settle on a motion that is already listed
-      for (const DetectedSymmetry& s : result.symmetries) refined_known = refined_known || same_motion(s.transform, probe.transform, centre, eps);
-      if (refined_known) continue;
       std::optional<DetectedSymmetry> found = evaluate(probe, result.stats);
+      // Refinement on keypoints can drift the same way: the exact power competes.
+      if (!prepared.model.is_point_cloud() && !same_motion(probe.transform, canonical, centre, 0.25 * eps)) {
+        Candidate exact = probe;
+        exact.transform = canonical;
+        std::optional<DetectedSymmetry> exact_found = evaluate(exact, result.stats);
+        if (exact_found && (!found || exact_found->r_symmetric_area > found->r_symmetric_area)) found = std::move(exact_found);
+      }
+      if (drifted_slide) {
+        if (found && found->pinned_fraction >= options.min_r_symmetric_fraction) *known = std::move(*found);
+        continue;
+      }
       if (!found) break;
+      if (listed_near(found->transform) != result.symmetries.end()) continue;  // settled on a listed motion
       result.symmetries.push_back(std::move(*found));
     }
   }
