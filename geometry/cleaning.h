@@ -27,7 +27,7 @@ struct CleaningOptions {
 struct CleaningReport {
   bool point_cloud = false;
   std::size_t input_vertices = 0;       ///< positions (points) as read
-  std::size_t input_triangles = 0;      ///< triangles as read (after fan triangulation)
+  std::size_t input_triangles = 0;      ///< triangles as read (after triangulating polygons)
   std::size_t welded_vertices = 0;      ///< distinct positions after the exact weld (points: after de-duplication)
   std::size_t vertices = 0;             ///< positions (points) in the cleaned model
   std::size_t triangles = 0;            ///< triangles in the cleaned mesh

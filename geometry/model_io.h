@@ -10,7 +10,7 @@
 namespace dg {
 
 /// Reads OBJ, OFF, PLY (ascii/binary), STL (ascii/binary), glTF 2.0 (.gltf/.glb) and XYZ.
-/// Polygons are fan-triangulated; glTF instances of the default scene get their node transforms.
+/// Polygons are triangulated inside their outlines (geometry/polygon_triangulation.h); glTF instances of the default scene get their node transforms.
 /// A PLY without faces and an XYZ file give a point cloud. Positions are NOT welded here
 /// (see clean_mesh). Throws InputError naming the file and the problem (unreadable, unknown
 /// format, malformed, empty, NaN/inf coordinates).

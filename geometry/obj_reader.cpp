@@ -83,6 +83,7 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
   mesh.positions.reserve(text.size() / 64);
   mesh.triangles.reserve(text.size() / 64);
   std::vector<std::uint32_t> corners;
+  PolygonFaces polygons;
   std::int64_t max_index = -1;
   std::size_t max_index_line = 0;
   std::map<std::string, std::uint32_t, std::less<>> material_index;  // name -> index in model.materials
@@ -114,7 +115,7 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
         corners.push_back(static_cast<std::uint32_t>(index));
       }
       if (corners.size() < 3) throw_line_error(name, reader.line(), "face with fewer than 3 corners");
-      add_fan(mesh, corners.data(), corners.size());
+      add_polygon(mesh, corners.data(), corners.size(), polygons);
       if (!model.materials.empty()) mesh.materials.resize(mesh.triangles.size(), material);
     } else if (keyword == "usemtl") {
       if (model.materials.empty() && !mesh.triangles.empty()) {  // faces came before any usemtl
@@ -140,6 +141,7 @@ Model read_obj(const std::filesystem::path& path, std::string_view text) {
                      "face index " + std::to_string(max_index + 1) + " out of range (file has " +
                          std::to_string(mesh.positions.size()) + " vertices)");
   }
+  triangulate_polygons(mesh, polygons);
   return model;
 }
 

@@ -72,6 +72,7 @@ Model read_off(const std::string& name, std::string_view text) {
     mesh.positions.push_back(p);
   }
   std::vector<std::uint32_t> corners;
+  PolygonFaces polygons;
   for (std::uint64_t f = 0; f < face_count; ++f) {
     if (!next_content_line(reader, line)) {
       throw InputError(name + ": file ends after " + std::to_string(f) + " of " + std::to_string(face_count) +
@@ -93,8 +94,9 @@ Model read_off(const std::string& name, std::string_view text) {
       }
       corners.push_back(static_cast<std::uint32_t>(index));
     }
-    add_fan(mesh, corners.data(), corners.size());
+    add_polygon(mesh, corners.data(), corners.size(), polygons);
   }
+  triangulate_polygons(mesh, polygons);
   return model;
 }
 

@@ -241,6 +241,7 @@ Model read_ply(const std::string& name, std::string_view bytes) {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> corners;
+  PolygonFaces polygons;
   bool seen_vertices = false;
   bool has_faces = false;
   std::uint64_t vertex_count = 0;
@@ -310,7 +311,7 @@ Model read_ply(const std::string& name, std::string_view bytes) {
         for (std::uint64_t j = 0; j < n; ++j) {
           corners.push_back(static_cast<std::uint32_t>(read_integer(body, p.type, name, "vertex index")));
         }
-        add_fan(model.mesh, corners.data(), corners.size());
+        add_polygon(model.mesh, corners.data(), corners.size(), polygons);
       }
     }
   }
@@ -325,6 +326,7 @@ Model read_ply(const std::string& name, std::string_view bytes) {
   }
   if (has_faces && !model.mesh.triangles.empty()) {
     model.mesh.positions = std::move(positions);
+    triangulate_polygons(model.mesh, polygons);
   } else {
     model.cloud.positions = std::move(positions);
     model.cloud.normals = std::move(normals);

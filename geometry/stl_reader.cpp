@@ -48,6 +48,7 @@ Model read_ascii(const std::string& name, std::string_view text) {
   Model model;
   TriangleMesh& mesh = model.mesh;
   std::vector<std::uint32_t> loop;
+  PolygonFaces polygons;
   bool in_loop = false;
   LineReader reader(text);
   std::string_view line;
@@ -68,7 +69,7 @@ Model read_ascii(const std::string& name, std::string_view text) {
     } else if (keyword == "endloop") {
       if (!in_loop) throw_line_error(name, reader.line(), "endloop without 'outer loop'");
       if (loop.size() < 3) throw_line_error(name, reader.line(), "facet with fewer than 3 vertices");
-      add_fan(mesh, loop.data(), loop.size());
+      add_polygon(mesh, loop.data(), loop.size(), polygons);
       in_loop = false;
     } else if (keyword.empty() || keyword == "solid" || keyword == "endsolid" || keyword == "facet" ||
                keyword == "endfacet") {
@@ -78,6 +79,7 @@ Model read_ascii(const std::string& name, std::string_view text) {
     }
   }
   if (in_loop) throw InputError(name + ": file is truncated (facet without endloop)");
+  triangulate_polygons(mesh, polygons);
   return model;
 }
 
