@@ -104,20 +104,33 @@ std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
   return static_cast<std::size_t>(std::count(reached.begin(), reached.end(), 0));
 }
 
-// Drops the productions of the flagged non-terminals that hold no child slot and rebuild no
-// slot of the exemplar (no slot names them as its original production), and renumbers the rest
+// Drops the productions of the flagged non-terminals that rebuild no slot of the exemplar (no
+// slot names them as their original production) and whose derivation has no choice left (no
+// non-terminal reachable from their child slots has two productions): children come along with
+// the docker they lie in, so the result is the exemplar moved. An alternative whose children
+// recurse or vary is kept (the Hochhaus Asemwald's slab grows by segments). Renumbers the rest
 // (keep_rules). Returns how many went.
-std::size_t drop_childless_alternatives(ContextFreeGrammar& grammar, const std::vector<char>& flagged_nonterminals) {
+std::size_t drop_alternatives_moving_the_model(ContextFreeGrammar& grammar, const std::vector<char>& flagged_nonterminals) {
   std::vector<char> named(grammar.productions.size(), 0);
   auto mark = [&](const ShapeProduction& p) {
     for (const ChildSlot& slot : p.children) named[slot.original_production] = 1;
   };
   for (const ShapeProduction& p : grammar.productions) mark(p);
   mark(grammar.axiom);
+  std::vector<std::size_t> production_count(grammar.nonterminals.size(), 0);
+  for (const ShapeProduction& p : grammar.productions) ++production_count[p.lhs];
+  auto children_vary = [&](const ShapeProduction& p) {
+    std::vector<std::size_t> starts;
+    for (const ChildSlot& slot : p.children) starts.push_back(slot.nonterminal);
+    const std::vector<char> reached = reachable_nonterminals(grammar, starts);
+    for (std::size_t n = 0; n < reached.size(); ++n)
+      if (reached[n] && production_count[n] > 1) return true;
+    return false;
+  };
   std::vector<char> keep(grammar.productions.size(), 1);
   for (std::size_t p = 0; p < grammar.productions.size(); ++p) {
     const ShapeProduction& production = grammar.productions[p];
-    if (flagged_nonterminals[production.lhs] && production.children.empty() && !named[p]) keep[p] = 0;
+    if (flagged_nonterminals[production.lhs] && !named[p] && !children_vary(production)) keep[p] = 0;
   }
   keep_rules(grammar, std::vector<char>(grammar.nonterminals.size(), 1), keep);
   return static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
@@ -1022,7 +1035,7 @@ class Builder {
     }
     if (!grammar.empty())
       stats.productions_moving_the_model =
-          drop_childless_alternatives(grammar, nonterminals_whose_swaps_move_the_model(grammar.nonterminals.size()));
+          drop_alternatives_moving_the_model(grammar, nonterminals_whose_swaps_move_the_model(grammar.nonterminals.size()));
     stats.unreachable_nonterminals = drop_unreachable_nonterminals(grammar);
   }
 

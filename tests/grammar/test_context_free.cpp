@@ -739,6 +739,29 @@ TEST_CASE("corpus: alternatives that only move the whole model are dropped (Swee
   CHECK(dg::test::hausdorff_distance(rebuilt.mesh, a->prepared.model.mesh) < a->prepared.surface.eps());
 }
 
+TEST_CASE("corpus: alternatives that move the whole model are dropped with the pieces inside them (Quaternius bank)",
+          "[grammar][context_free][corpus]") {
+  // Two locations of one non-terminal, most of the bank each, are related by a shift of 339.2
+  // along x and 54 along z, and the rest of the model around them is the same, shifted. Only its
+  // alternatives without child slots were dropped: the four with children (the capitals inside)
+  // made every variant the bank shifted by (339.2, 0, -54) with its triangles tripled.
+  const std::optional<Analysed> a = analyse_corpus("meshes/arch-quaternius-bank/bank.obj");
+  if (!a) return;
+  REQUIRE_FALSE(a->grammar.empty());
+  CHECK(a->stats.productions_moving_the_model >= 1);
+  const dg::BoundingBox exemplar = a->prepared.model.mesh.bounds();
+  const double eps = a->prepared.surface.eps();
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    dg::ShapeDerivationOptions options;
+    options.seed = seed;
+    const dg::ShapeDerivation variant = dg::derive_shape(a->grammar, eps, options);
+    const dg::BoundingBox box = variant.mesh.bounds();
+    INFO("seed " << seed);
+    CHECK((box.min - exemplar.min).norm() < eps);
+    CHECK((box.max - exemplar.max).norm() < eps);
+  }
+}
+
 TEST_CASE("grid rules, docking sites and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
   dg::Model model;
   model.mesh = dg::assets::make_asset("fence", {{"n", 4}}).mesh;
