@@ -170,9 +170,12 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
         if (barely_moves(probe)) continue;  // refined onto a slide or the identity
       }
       if (probe.matches.size() < candidate_options.min_support) break;
+      // Refinement on keypoints can drift the same way: then the exact power competes.
+      const bool drifted = !prepared.model.is_point_cloud() && !same_motion(probe.transform, canonical, centre, 0.25 * eps);
+      const bool refined_listed = listed_near(probe.transform) != result.symmetries.end();  // ICP settled on a listed motion
+      if (refined_listed && !drifted && !drifted_slide) continue;
       std::optional<DetectedSymmetry> found = evaluate(probe, result.stats);
-      // Refinement on keypoints can drift the same way: the exact power competes.
-      if (!prepared.model.is_point_cloud() && !same_motion(probe.transform, canonical, centre, 0.25 * eps)) {
+      if (drifted) {
         Candidate exact = probe;
         exact.transform = canonical;
         std::optional<DetectedSymmetry> exact_found = evaluate(exact, result.stats);
@@ -182,8 +185,11 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
         if (found && found->pinned_fraction >= options.min_r_symmetric_fraction) *known = std::move(*found);
         continue;
       }
-      if (!found) break;
-      if (listed_near(found->transform) != result.symmetries.end()) continue;  // settled on a listed motion
+      if (!found) {
+        if (refined_listed) continue;
+        break;
+      }
+      if (listed_near(found->transform) != result.symmetries.end()) continue;
       result.symmetries.push_back(std::move(*found));
     }
   }
