@@ -48,7 +48,8 @@ inline void add_polygon(TriangleMesh& mesh, const std::uint32_t* corners, std::s
     polygons.corner_start.push_back(polygons.corners.size());
     polygons.corners.insert(polygons.corners.end(), corners, corners + count);
   }
-  for (std::size_t i = 1; i + 1 < count; ++i) mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  const std::vector<Triangle> triangles = fan(std::span<const std::uint32_t>(corners, count));
+  mesh.triangles.insert(mesh.triangles.end(), triangles.begin(), triangles.end());
 }
 
 /// Replaces each noted polygon's fan by triangulate_polygon's triangles (the same count, so

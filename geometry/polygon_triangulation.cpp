@@ -16,13 +16,13 @@ bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
   return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
 }
 
+}  // namespace
+
 std::vector<Triangle> fan(std::span<const std::uint32_t> corners) {
   std::vector<Triangle> triangles;
   for (std::size_t i = 1; i + 1 < corners.size(); ++i) triangles.push_back({corners[0], corners[i], corners[i + 1]});
   return triangles;
 }
-
-}  // namespace
 
 std::vector<Triangle> triangulate_polygon(const std::vector<Vec3>& positions, std::span<const std::uint32_t> input) {
   const std::size_t n = input.size();

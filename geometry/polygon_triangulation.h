@@ -11,6 +11,9 @@
 
 namespace dg {
 
+/// The fan (c0 c1 c2), (c0 c2 c3), ... of a polygon's corners: n - 2 triangles.
+std::vector<Triangle> fan(std::span<const std::uint32_t> corners);
+
 /// The polygon's n - 2 triangles, in its winding order: its fan (c0 c1 c2), (c0 c2 c3), ... when
 /// it is convex; else ear clipping in the plane of its Newell normal, started from its lowest
 /// corner by position (so a back-to-back copy, its corners in the opposite order, gets the same

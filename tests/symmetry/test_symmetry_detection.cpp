@@ -93,11 +93,11 @@ TEST_CASE("fence: its rails slide, and still slide under a motion carrying a rot
   REQUIRE(family != nullptr);
   const dg::CellMatcher matcher(d.prepared.surface, nullptr, dg::SymmetryOptions{}.region);
   const double total = d.prepared.surface.total_area(), shift = 0.5 * d.prepared.surface.r();
+  const dg::BoundingBox box = d.prepared.model.bounds();
+  const Vec3 centre = 0.5 * (box.min + box.max);
   for (std::size_t m = 0; m < family->members.size(); ++m) {
     const dg::DetectedSymmetry& s = d.result.symmetries[family->members[m]];
     dg::RigidTransform tilted = s.transform;
-    const dg::BoundingBox box = d.prepared.model.bounds();
-    const Vec3 centre = 0.5 * (box.min + box.max);
     tilted.rotation = Eigen::AngleAxisd(3e-9, Vec3(0.6, 0.0, 0.8)).toRotationMatrix();
     tilted.translation = s.transform.apply(centre) - tilted.rotation * centre;  // the same at the centre
     const double pinned = dg::pinned_area(matcher, d.prepared.surface, s.transform, s.region.r_symmetric_cells, shift) / total;
