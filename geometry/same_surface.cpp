@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace dg {
 namespace {
@@ -48,13 +50,17 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
   return cells;
 }
 
-// Every cell of `a` is a cell of `b` or touches one (26-neighbourhood); both sorted.
-bool cells_covered(const std::vector<CellKey>& a, const std::vector<CellKey>& b) {
+// Every cell of `a` is a cell of `b` or lies within `rings` cells of one; both sorted. Cells in
+// both are found by walking the two lists together; only the others search their neighbours.
+bool cells_covered(const std::vector<CellKey>& a, const std::vector<CellKey>& b, std::int64_t rings = 1) {
+  auto in_b = b.begin();
   for (const CellKey& k : a) {
+    while (in_b != b.end() && *in_b < k) ++in_b;
+    if (in_b != b.end() && *in_b == k) continue;
     bool near = false;
-    for (std::int64_t dx = -1; dx <= 1 && !near; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && !near; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && !near; ++dz)
+    for (std::int64_t dx = -rings; dx <= rings && !near; ++dx)
+      for (std::int64_t dy = -rings; dy <= rings && !near; ++dy)
+        for (std::int64_t dz = -rings; dz <= rings && !near; ++dz)
           near = std::binary_search(b.begin(), b.end(), CellKey{k[0] + dx, k[1] + dy, k[2] + dz});
     if (!near) return false;
   }
@@ -77,6 +83,99 @@ std::map<std::uint32_t, MaterialPart> parts_by_material(const TriangleMesh& mesh
   return parts;
 }
 
+// Flags per triangle of `a` and of `b`: 1 when it has a twin in the other mesh, a triangle of the
+// same material whose corners fall in the same cells of edge `cell` (model units; the grid is
+// offset so round coordinates lie inside cells), in any order. Twins are paired one to one.
+std::pair<std::vector<char>, std::vector<char>> twin_triangles(const TriangleMesh& a, const TriangleMesh& b, double cell) {
+  const Vec3 offset = cell * Vec3(0.381966, 0.267949, 0.414214);
+  using Key = std::array<std::int64_t, 10>;  // material, then the sorted corner cells
+  auto keys = [&](const TriangleMesh& mesh) {
+    std::vector<std::pair<Key, std::size_t>> out;
+    out.reserve(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto [p, q, r] = mesh.corners(t);
+      std::array<CellKey, 3> corners{cell_key(p + offset, cell), cell_key(q + offset, cell), cell_key(r + offset, cell)};
+      std::sort(corners.begin(), corners.end());
+      Key key{mesh.has_materials() ? static_cast<std::int64_t>(mesh.materials[t]) : 0};
+      for (std::size_t c = 0; c < 3; ++c)
+        std::copy(corners[c].begin(), corners[c].end(), key.begin() + 1 + 3 * static_cast<std::ptrdiff_t>(c));
+      out.emplace_back(key, t);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto keys_a = keys(a), keys_b = keys(b);
+  std::vector<char> twin_a(a.triangles.size(), 0), twin_b(b.triangles.size(), 0);
+  for (auto i = keys_a.begin(), j = keys_b.begin(); i != keys_a.end() && j != keys_b.end();) {
+    if (i->first < j->first) {
+      ++i;
+    } else if (j->first < i->first) {
+      ++j;
+    } else {
+      twin_a[(i++)->second] = 1;
+      twin_b[(j++)->second] = 1;
+    }
+  }
+  return {std::move(twin_a), std::move(twin_b)};
+}
+
+// Pairs of triangles up to which `near_triangles` tests each triangle of `to` against each of
+// `from` before it keeps those near any; beyond, those near all of `from` are kept.
+constexpr std::size_t kNearPairsTested = 1u << 22;
+
+// The listed triangles of `to` whose bounding boxes come within `reach` (model units) of those
+// of the listed triangles of `from` (of all of them together when the pairs are too many).
+std::vector<std::size_t> near_triangles(const TriangleMesh& from, const std::vector<std::size_t>& from_triangles,
+                                        const TriangleMesh& to, const std::vector<std::size_t>& to_triangles, double reach) {
+  if (from_triangles.empty()) return {};
+  const Vec3 margin = Vec3::Constant(reach);
+  auto box = [](const TriangleMesh& mesh, std::size_t t) {
+    BoundingBox b;
+    for (const Vec3& p : mesh.corners(t)) b.add(p);
+    return b;
+  };
+  auto meet = [&](const BoundingBox& x, const BoundingBox& y) {
+    return ((x.min - margin).array() <= y.max.array()).all() && (y.min.array() <= (x.max + margin).array()).all();
+  };
+  std::vector<BoundingBox> from_boxes;
+  BoundingBox all;
+  for (std::size_t t : from_triangles) {
+    from_boxes.push_back(box(from, t));
+    all.add(from_boxes.back().min);
+    all.add(from_boxes.back().max);
+  }
+  std::vector<std::size_t> near;
+  for (std::size_t t : to_triangles)
+    if (meet(all, box(to, t))) near.push_back(t);
+  if (near.size() * from_boxes.size() <= kNearPairsTested)
+    std::erase_if(near, [&](std::size_t t) {
+      const BoundingBox b = box(to, t);
+      return std::none_of(from_boxes.begin(), from_boxes.end(), [&](const BoundingBox& f) { return meet(f, b); });
+    });
+  return near;
+}
+
+// Cells of a surface up to which a comparison samples it on the cells it asks for; a larger
+// surface is sampled on cells grown to stay within this many (its test then allows more).
+constexpr double kMostSurfaceCells = 1 << 20;
+
+// One side of a comparison: triangles of `from` that must be covered by the listed ones of `to`.
+struct CoverTest {
+  const TriangleMesh* from;
+  std::vector<std::size_t> from_triangles;
+  const TriangleMesh* to;
+  std::vector<std::size_t> to_triangles;
+
+  // Whether every cell of edge `cell` (grown for large surfaces, kMostSurfaceCells) the `from`
+  // triangles pass through lies within `rings` cells of one the `to` triangles pass through.
+  bool holds(double cell, std::int64_t rings) const {
+    double area = 0.0;
+    for (std::size_t t : from_triangles) area += 0.5 * from->area_vector(t).norm();
+    const double sampled = std::max(cell, std::sqrt(area / kMostSurfaceCells));
+    return cells_covered(surface_cells(*from, from_triangles, sampled), surface_cells(*to, to_triangles, sampled), rings);
+  }
+};
+
 }  // namespace
 
 bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance) {
@@ -92,14 +191,35 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
     });
   };
   if (!matched(parts_a, parts_b) || !matched(parts_b, parts_a)) return false;
+  // Twins (corners in one cell of edge tolerance / 8, within 0.22 tolerance) cover each other:
+  // only the other triangles are sampled, against the other mesh's triangles near them. Exact
+  // copies cut alike have no others.
+  const auto [twin_a, twin_b] = twin_triangles(a, b, tolerance / 8.0);
+  auto without_twins = [](std::vector<std::size_t> triangles, const std::vector<char>& twin) {
+    std::erase_if(triangles, [&](std::size_t t) { return twin[t] != 0; });
+    return triangles;
+  };
+  // Cells of one surface touch the other's only through triangles whose boxes come within 2
+  // tolerance of theirs.
+  std::vector<CoverTest> tests;
   for (const auto& [material, part_a] : parts_a) {
     const auto found = parts_b.find(material);
     if (found == parts_b.end()) continue;
-    const std::vector<CellKey> cells_a = surface_cells(a, part_a.triangles, 0.5 * tolerance),
-                               cells_b = surface_cells(b, found->second.triangles, 0.5 * tolerance);
-    if (!cells_covered(cells_a, cells_b) || !cells_covered(cells_b, cells_a)) return false;
+    const std::vector<std::size_t>& triangles_b = found->second.triangles;
+    for (auto [from, from_all, twin, to, to_all] : {std::tuple{&a, &part_a.triangles, &twin_a, &b, &triangles_b},
+                                                     std::tuple{&b, &triangles_b, &twin_b, &a, &part_a.triangles}}) {
+      std::vector<std::size_t> rest = without_twins(*from_all, *twin);
+      if (rest.empty()) continue;
+      std::vector<std::size_t> near = near_triangles(*from, rest, *to, *to_all, 2.0 * tolerance);
+      tests.push_back(CoverTest{from, std::move(rest), to, std::move(near)});
+    }
   }
-  return true;
+  // Surfaces that pass on cells of tolerance / 2 lie within about 1.7 tolerance of each other,
+  // so on cells of 8 tolerance within two of each other's (one for the distance, one for a cell
+  // the sampling missed): most differing surfaces fail there first, at 1/256 of the samples.
+  const auto coarse = [&](const CoverTest& test) { return test.holds(8.0 * tolerance, 2); };
+  const auto fine = [&](const CoverTest& test) { return test.holds(0.5 * tolerance, 1); };
+  return std::all_of(tests.begin(), tests.end(), coarse) && std::all_of(tests.begin(), tests.end(), fine);
 }
 
 bool same_points(const PointCloud& a, const PointCloud& b, double tolerance) {

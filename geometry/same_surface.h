@@ -11,7 +11,9 @@ namespace dg {
 /// passes through touches one the other passes through, so they lie within about 1.7 tolerance
 /// of each other). A material of no more than tolerance^2 of area may be missing from one of
 /// them. Area is not compared: a mesh holding a hidden second layer of faces (duplicated
-/// triangles, as real assets have) is the same surface.
+/// triangles, as real assets have) is the same surface. Triangles with a twin in the other mesh
+/// (corners within tolerance / 8) need no cells; the rest is sampled, on cells grown to keep to
+/// about a million where its area needs more (the test then allows proportionally more).
 bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance);
 
 /// True when `a` and `b` have bounding boxes within 2 `tolerance` (model units) and their points

@@ -19,6 +19,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 
 namespace dg {
 namespace {
@@ -133,6 +134,14 @@ void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells,
 // Chains with the most units between planes whose copies beyond the planes are counted (in the
 // order of the rest of the ranking) when the best of them has any.
 constexpr std::size_t kLongestChainsCounted = 16;
+// When the model leaves room for another unit beyond the best chain's, further chains with up to
+// kShorterChainLevels fewer units between planes (at least one) are counted too, in ranking order,
+// one per stretch of phases and kShorterChainsCounted in all: a phase whose planes cross thin
+// dividers fits fewer units between planes than one through the cells, but may reach whole copies
+// at both ends (a shelf's bottom and top rows, whose outer boards differ from its dividers).
+// Moving the phase loses at most the plane at each end.
+constexpr int kShorterChainLevels = 2;
+constexpr std::size_t kShorterChainsCounted = 6;
 
 // Whether the model spans `pitches` times the translation t (bounded by its bounding box): every
 // plane crosses the model, so that many units need that much extent along t. A cheap rejection
@@ -191,6 +200,15 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
   for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
   for (const auto& [s, n] : vertex_offsets) phases[std::fmod(s - lowest, pitch)] += n;
+  // Stretches of phases between those of vertices: index of the first vertex phase at or above
+  // `phase`, doubled, plus one when the phase is a vertex phase.
+  std::vector<double> vertex_phases;
+  for (const auto& [phase, n] : phases)
+    if (n > 0) vertex_phases.push_back(phase);
+  auto phase_stretch = [&](double phase) {
+    const auto at = std::lower_bound(vertex_phases.begin(), vertex_phases.end(), phase);
+    return 2 * (at - vertex_phases.begin()) + (at != vertex_phases.end() && *at == phase ? 1 : 0);
+  };
   // Every slab between planes `first` + k pitch, k < `slabs`, maps onto the next: (almost) no
   // asymmetric cell strictly inside.
   auto slabs_repeat = [&](double first, int slabs) {
@@ -268,13 +286,15 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     return direction;
   };
   // The best chain whose first unit lies outside every range in `sliding`. Ranking: more units
-  // between planes; then, when the best by the rest counts copies beyond its planes (the phase
-  // decides whether whole copies remain at the ends), more units in all; then more clearance
-  // (beyond rounding); then the smallest seams (fewest surface cells crossed by the planes); then
-  // planes through more existing vertices.
+  // between planes; then, when the best by the rest counts copies beyond its planes or leaves room
+  // for them (the phase decides whether whole copies remain at the ends), more units in all
+  // (kLongestChainsCounted, kShorterChainLevels); then more clearance (beyond rounding); then the
+  // smallest seams (fewest surface cells crossed by the planes); then planes through more existing
+  // vertices.
   const double wanted_clearance = surface.r();
   struct Chain {
     double first = 0.0;
+    double phase = 0.0;  // of its planes, in [0, pitch) from the model's lowest point
     int count = 0;
     double clearance = -1.0;
     std::size_t crossed = 0;
@@ -285,7 +305,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       return std::any_of(sliding.begin(), sliding.end(),
                          [&](const auto& range) { return first < range.second && first + pitch > range.first; });
     };
-    std::vector<Chain> longest;  // the chains with the most units between planes
+    std::vector<Chain> chains;  // every run of at least one unit (shorter ones may reach copies)
     for (const auto& [phase, vertices] : phases) {
       // Walk the planes lowest + phase + j * pitch across the model and find runs of allowed ones.
       for (double first = lowest + phase; first <= highest; first += pitch) {
@@ -303,7 +323,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
             count = k + 1;
             break;
           }
-        if (count < min_repeats || (!longest.empty() && count < longest[0].count)) continue;
+        if (count < 1) continue;
         bool on_face = false;
         for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
         if (on_face) continue;
@@ -313,21 +333,39 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
         clearance = std::min(clearance, backward.clearance(first + count * pitch));
         std::size_t crossed = 0;
         for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-        if (!longest.empty() && count > longest[0].count) longest.clear();
-        longest.push_back(Chain{first, count, clearance, crossed, vertices});
+        chains.push_back(Chain{first, phase, count, clearance, crossed, vertices});
       }
     }
-    if (longest.empty()) return std::nullopt;
-    std::stable_sort(longest.begin(), longest.end(), [](const Chain& a, const Chain& b) {
+    if (chains.empty()) return std::nullopt;
+    std::stable_sort(chains.begin(), chains.end(), [](const Chain& a, const Chain& b) {
+      if (a.count != b.count) return a.count > b.count;
       if (std::abs(a.clearance - b.clearance) > 1e-12) return a.clearance > b.clearance;
       return a.crossed != b.crossed ? a.crossed < b.crossed : a.vertices > b.vertices;
     });
-    GridDirection best = settled(longest[0].first, longest[0].count);
-    if (best.count > longest[0].count)  // copies beyond the planes: other phases may leave more
-      for (std::size_t i = 1; i < std::min(longest.size(), kLongestChainsCounted); ++i) {
-        GridDirection other = settled(longest[i].first, longest[i].count);
-        if (other.count > best.count) best = std::move(other);
+    const int longest = chains[0].count;
+    if (longest < min_repeats) return std::nullopt;
+    GridDirection best = settled(chains[0].first, longest);
+    if (copy_tolerance <= 0.0) return best;
+    // Copies beyond the planes, or room for them: other phases may leave more units in all.
+    const bool beyond = best.count > longest, room = (best.count + 1) * pitch <= highest - lowest;
+    // With room, one chain per stretch between vertex phases is counted: its planes cross the
+    // same edges as any other chain's there.
+    std::set<std::ptrdiff_t> stretches{phase_stretch(chains[0].phase)};
+    std::size_t longest_counted = 1, shorter_counted = 0;
+    for (std::size_t i = 1; i < chains.size(); ++i) {
+      const Chain& chain = chains[i];
+      if (chain.count == longest && beyond) {
+        if (longest_counted == kLongestChainsCounted) continue;
+        ++longest_counted;
+      } else {
+        if (!room || chain.count < longest - kShorterChainLevels || shorter_counted == kShorterChainsCounted ||
+            !stretches.insert(phase_stretch(chain.phase)).second)
+          continue;
+        ++shorter_counted;
       }
+      GridDirection other = settled(chain.first, chain.count);
+      if (other.count > best.count) best = std::move(other);
+    }
     return best;
   };
   // An extrusion cut at the pitch (a corridor reaching out of a map) is no row of units: its
@@ -591,6 +629,16 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   auto more_units = [&](const GridDirection& a, const GridDirection& b) {
     return a.count != b.count ? a.count > b.count : axis_of(a) < axis_of(b);
   };
+  // A translation that is a power of a screw with more units (a full turn of a spiral stair that
+  // climbs more than one) gives way to the screw: its units hold several of the screw's.
+  const Vec3 middle = 0.5 * (prepared.cleaning.bounds.min + prepared.cleaning.bounds.max);
+  std::erase_if(translations, [&](const GridDirection& translation) {
+    return std::any_of(screws.begin(), screws.end(), [&](const GridDirection& screw) {
+      const int turn = static_cast<int>(std::lround(translation.pitch / screw.pitch));
+      return screw.count > translation.count && turn >= 2 &&
+             same_motion(power(screw.motion, turn), translation.motion, middle, prepared.surface.eps());
+    });
+  });
   std::stable_sort(translations.begin(), translations.end(), more_units);
   std::stable_sort(screws.begin(), screws.end(), more_units);
   auto next_grid = [&]() {

@@ -26,6 +26,37 @@ TEST_CASE("same_surface: a mesh moved within the tolerance is the same, moved fa
   CHECK_FALSE(dg::same_surface(mesh, dg::transformed(mesh, shift(5.0 * tolerance)), tolerance));
 }
 
+TEST_CASE("same_surface: one surface triangulated two ways is the same, with a dent it is not", "[geometry]") {
+  // A 40 x 30 rectangle in z = 0, as 2 triangles and as a 4 x 3 grid of quads split along the
+  // other diagonal; with tolerance 0.01 its sampling needs about 48 million cells of tolerance / 2,
+  // so the cells grow (about a million) and the comparison stays quick.
+  auto grid = [](int nx, int ny, bool flip, double dent) {
+    dg::TriangleMesh mesh;
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) mesh.positions.emplace_back(40.0 * i / nx, 30.0 * j / ny, i == 1 && j == 1 ? dent : 0.0);
+    auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        if (flip) {
+          mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+          mesh.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+        } else {
+          mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+          mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+      }
+    return mesh;
+  };
+  const double tolerance = 0.01;
+  const dg::TriangleMesh two = grid(1, 1, false, 0.0), quads = grid(4, 3, true, 0.0);
+  CHECK(dg::same_surface(two, quads, tolerance));
+  CHECK(dg::same_surface(quads, two, tolerance));
+  CHECK(dg::same_surface(quads, dg::transformed(quads, shift(0.2 * tolerance)), tolerance));  // twins
+  // An inner vertex lifted by 2: a dent of 20 x 20 that the two triangles do not have.
+  CHECK_FALSE(dg::same_surface(two, grid(4, 3, true, 2.0), tolerance));
+  CHECK_FALSE(dg::same_surface(grid(4, 3, true, 2.0), quads, tolerance));
+}
+
 TEST_CASE("same_points: two samplings of one surface are the same, a cloud with a hole is not", "[geometry]") {
   const dg::TriangleMesh mesh = facade();
   const double tolerance = 0.05;

@@ -110,8 +110,14 @@ TEST_CASE("shelf(n x m): a 2-grid along the column and row pitches that resizes 
     REQUIRE(a.grids.size() == 1);
     const dg::GridRule& grid = a.grids[0];
     CHECK(grid.directions.size() == 2);
-    CHECK(direction_along(grid, Vec3(0.368, 0, 0)) != nullptr);
-    CHECK(direction_along(grid, Vec3(0, 0, 0.318)) != nullptr);
+    const dg::GridDirection* along_columns = direction_along(grid, Vec3(0.368, 0, 0));
+    const dg::GridDirection* along_rows = direction_along(grid, Vec3(0, 0, 0.318));
+    REQUIRE(along_columns != nullptr);
+    REQUIRE(along_rows != nullptr);
+    // Ground truth: one unit per column and per row, the outer ones included (their boards are
+    // thicker than the dividers, so only copies beyond the planes reach them).
+    CHECK(along_columns->count == columns);
+    CHECK(along_rows->count == rows);
     // The exemplar's counts rebuild it; one more unit in each direction is the generator's shelf
     // with one more column and one more row.
     const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(a.prepared.model.mesh, grid, a.prepared.surface.eps());
@@ -174,16 +180,21 @@ TEST_CASE("messy facade: the clean facade's grid, 3 columns and 4 rows", "[gramm
 }
 
 TEST_CASE("spiral stairs: a 1-grid along the screw motion with one unit per step", "[grammar][grid]") {
-  const Analysis a = analyze_asset("spiral_stairs", {{"steps", 12}});
-  REQUIRE(a.grids.size() == 1);
-  REQUIRE(a.grids[0].directions.size() == 1);
-  const dg::GridDirection& d = a.grids[0].directions[0];
-  const dg::ScrewParameters screw = dg::screw_parameters(d.motion);
-  CHECK(screw.angle * 180 / 3.14159265358979 == Approx(30).margin(0.1));   // ground truth: 360 / 12 per step
-  CHECK(std::abs(screw.slide) == Approx(0.18).margin(1e-3));              // the rise
-  CHECK(std::abs(screw.axis.z()) == Approx(1).margin(1e-3));
-  CHECK(d.direction.isApprox(Vec3(0, 0, 1), 1e-6));                      // cut planes across the axis
-  CHECK(d.count == 12);                                                   // count = steps
+  // 30 and 20 steps climb more than one turn: a full turn (12 or 8 steps) is also a translation
+  // along the axis, with 2 units; the screw's units are the steps.
+  for (const auto& [steps, per_turn] : std::vector<std::pair<int, int>>{{12, 12}, {30, 12}, {20, 8}}) {
+    CAPTURE(steps, per_turn);
+    const Analysis a = analyze_asset("spiral_stairs", {{"steps", steps}, {"steps_per_turn", per_turn}});
+    REQUIRE(a.grids.size() == 1);
+    REQUIRE(a.grids[0].directions.size() == 1);
+    const dg::GridDirection& d = a.grids[0].directions[0];
+    const dg::ScrewParameters screw = dg::screw_parameters(d.motion);
+    CHECK(screw.angle * 180 / 3.14159265358979 == Approx(360.0 / per_turn).margin(0.1));  // ground truth per step
+    CHECK(std::abs(screw.slide) == Approx(0.18).margin(1e-3));                            // the rise
+    CHECK(std::abs(screw.axis.z()) == Approx(1).margin(1e-3));
+    CHECK(d.direction.isApprox(Vec3(0, 0, 1), 1e-6));  // cut planes across the axis
+    CHECK(d.count == steps);                           // count = steps
+  }
 }
 
 TEST_CASE("gear: no translational grid for a full rotation group", "[grammar][grid]") {

@@ -31,11 +31,11 @@ TEST_CASE("painted wall: a 2-grid of windows with --match-materials, none from g
     for (const auto& direction : grids[0].directions) found.emplace_back(direction.pitch, direction.count);
     std::sort(found.begin(), found.end());
     CHECK(std::abs(found[0].first - kPitchY) < 1e-6);
-    // Identical cells with nothing different at the ends: the head and the tail together make one
-    // cell, so n cells are n - 1 repeated units (as with the Kenney gate's identical stakes).
-    CHECK(found[0].second == rows - 1);
+    // Identical cells with nothing different at the ends: planes at the cells' borders keep every
+    // cell whole, so n cells are n units (the ends count as copies beyond the planes).
+    CHECK(found[0].second == rows);
     CHECK(std::abs(found[1].first - kPitchX) < 1e-6);
-    CHECK(found[1].second == columns - 1);
+    CHECK(found[1].second == columns);
 
     const dg::PreparedModel geometry_only = dg::prepare_model(painted_wall(columns, rows));
     CHECK(dg::find_grids(geometry_only, dg::detect_symmetries(geometry_only)).empty());

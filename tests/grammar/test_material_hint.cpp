@@ -70,7 +70,8 @@ TEST_CASE("material hint: windows in three random tints give their grid once the
   REQUIRE(hint);
   REQUIRE(hint->groups.size() == 1);
   CHECK(hint->groups[0] == std::vector<std::string>{"tint0", "tint1", "tint2"});
-  // The painted wall's grid: n cells are n - 1 repeated units in each direction.
+  // The grouped wall's grid: its end cells keep their own tints in the mesh, so they are no
+  // copies of their neighbours, and n cells are n - 1 repeated units in each direction.
   CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{rows - 1, columns - 1}});
   // No hint (no search) when analysis already found a grid or materials were matched.
   CHECK(dg::material_hint_applies(prepared, {}, 0));
@@ -85,7 +86,7 @@ TEST_CASE("material hint: windows in one material need --match-materials alone",
   const std::optional<dg::MaterialHint> hint = dg::material_hint(prepared, {}, {}, 0);
   REQUIRE(hint);
   CHECK(hint->groups.empty());
-  CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{2, 4}});
+  CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{3, 5}});  // one unit per cell
 }
 
 TEST_CASE("material hint: stripes of materials that never repeat give none", "[grammar][materials]") {

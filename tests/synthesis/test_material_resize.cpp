@@ -77,7 +77,7 @@ TEST_CASE("materials: windows painted on a flat wall come back whole in a resize
   const dg::ShapeGrammar grammar = dg::test::model_grammar(dg::test::painted_wall(6, 4), false, options);
   REQUIRE(grammar.grids.size() == 1);
   REQUIRE(grammar.grids[0].rule.directions.size() == 2);
-  std::vector<int> counts;  // two more cells each way (n cells are n - 1 units)
+  std::vector<int> counts;  // two more cells each way (n cells are n units)
   for (const dg::GridDirection& d : grammar.grids[0].rule.directions) counts.push_back(d.count + 2);
   const dg::TriangleMesh resized =
       dg::resize_grid(grammar.grids[0].rule, grammar.grids[0].pieces, counts, grammar.eps);
@@ -94,6 +94,6 @@ TEST_CASE("materials: windows painted on a flat wall come back whole in a resize
       CHECK((x > 0.75 - 1e-9 && x < 2.25 + 1e-9 && y > 0.5 - 1e-9 && y < 1.5 + 1e-9));
     }
   }
-  CHECK(glass == Approx((counts[0] + 1) * (counts[1] + 1) * 1.5).epsilon(1e-9));
-  CHECK(resized.area() == Approx((counts[0] + 1) * (counts[1] + 1) * 6.0).epsilon(1e-9));
+  CHECK(glass == Approx(counts[0] * counts[1] * 1.5).epsilon(1e-9));
+  CHECK(resized.area() == Approx(counts[0] * counts[1] * 6.0).epsilon(1e-9));
 }
