@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <utility>
@@ -26,20 +27,26 @@ bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction) 
   const double lo = direction.cut + direction.head_units * direction.pitch, hi = lo + direction.pitch;
   const ScrewParameters screw = screw_parameters(direction.motion);
   const bool translation = screw.angle < 1e-12;
-  auto velocity = [&](const Vec3& x) -> Vec3 {
-    if (translation) return direction.motion.translation;
-    return screw.angle * screw.axis.cross(x - screw.axis_point) + screw.slide * screw.axis;
-  };
+  // Velocity fields tested: the motion's, and a screw's slide alone (a faceted column turned by
+  // the screw onto itself is an extrusion along the axis, yet its facets face the turn).
+  const std::array<std::function<Vec3(const Vec3&)>, 2> fields{
+      [&](const Vec3& x) -> Vec3 {
+        if (translation) return direction.motion.translation;
+        return screw.angle * screw.axis.cross(x - screw.axis_point) + screw.slide * screw.axis;
+      },
+      [&](const Vec3&) -> Vec3 { return screw.axis; }};
+  const std::size_t field_count = translation ? 1 : 2;
   // Not parallel to the velocity at either end (its direction, unit).
-  auto crosses_flow = [&](const Vec3& a, const Vec3& b) {
+  auto crosses_flow = [&](std::size_t field, const Vec3& a, const Vec3& b) {
     const Vec3 along = (b - a).normalized();
     const std::array<Vec3, 2> ends{a, b};
     return std::any_of(ends.begin(), ends.end(), [&](const Vec3& x) {
-      const Vec3 v = velocity(x);
+      const Vec3 v = fields[field](x);
       return v.norm() > 0.0 && along.cross(v.normalized()).norm() > kTangent;
     });
   };
-  double area = 0.0, facing = 0.0;
+  double area = 0.0;
+  std::array<double, 2> facing{0.0, 0.0};
   // Per edge: its triangles, and whether they have more than one material.
   struct EdgeUse {
     int triangles = 0;
@@ -59,11 +66,13 @@ bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction) 
     if (whole > 0.0) {
       const Vec3 normal = normal_area.normalized();
       const std::array<Vec3, 3> corners{a, b, c};
-      const bool faces = std::any_of(corners.begin(), corners.end(), [&](const Vec3& x) {
-        const Vec3 v = velocity(x);
-        return v.norm() > 0.0 && std::abs(normal.dot(v.normalized())) > kTangent;
-      });
-      if (faces) facing += inside;
+      for (std::size_t f = 0; f < field_count; ++f) {
+        const bool faces = std::any_of(corners.begin(), corners.end(), [&](const Vec3& x) {
+          const Vec3 v = fields[f](x);
+          return v.norm() > 0.0 && std::abs(normal.dot(v.normalized())) > kTangent;
+        });
+        if (faces) facing[f] += inside;
+      }
     }
     const Triangle& tri = mesh.triangles[t];
     const std::uint32_t material = mesh.has_materials() ? mesh.materials[t] : 0;
@@ -74,16 +83,20 @@ bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction) 
       ++use.triangles;
     }
   }
-  if (!(area > 0.0) || facing > kFacingShare * area) return false;
+  if (!(area > 0.0)) return false;
   // An open edge across the flow ends the surface inside the unit (a card-like baluster); a
   // border between materials across it ends a painted element (a window on a flat wall).
-  for (const auto& [edge, use] : edge_uses) {
-    if (use.triangles != 1 && !use.mixed) continue;
-    const Vec3 &a = mesh.positions[edge.first], &b = mesh.positions[edge.second];
-    const double sa = d.dot(a), sb = d.dot(b);
-    if (std::max(sa, sb) > lo && std::min(sa, sb) < hi && crosses_flow(a, b)) return false;
-  }
-  return true;
+  auto slides_along = [&](std::size_t field) {
+    if (facing[field] > kFacingShare * area) return false;
+    for (const auto& [edge, use] : edge_uses) {
+      if (use.triangles != 1 && !use.mixed) continue;
+      const Vec3 &a = mesh.positions[edge.first], &b = mesh.positions[edge.second];
+      const double sa = d.dot(a), sb = d.dot(b);
+      if (std::max(sa, sb) > lo && std::min(sa, sb) < hi && crosses_flow(field, a, b)) return false;
+    }
+    return true;
+  };
+  return slides_along(0) || (field_count > 1 && slides_along(1));
 }
 
 }  // namespace dg

@@ -15,7 +15,8 @@ namespace dg {
 /// parallel to every open edge and every border between materials there. Such a unit is an
 /// extrusion (of a corridor, rail or wall), not an element that repeats at the pitch: a stair
 /// step, a baluster or a window frame faces along the motion somewhere, and a window painted on
-/// a flat wall has borders across it.
+/// a flat wall has borders across it. A screw's unit also slides when its slide alone (along the
+/// axis) is tangent so: a faceted column that the screw's turn maps onto itself.
 bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction);
 
 }  // namespace dg

@@ -181,8 +181,10 @@ TEST_CASE("messy facade: the clean facade's grid, 3 columns and 4 rows", "[gramm
 
 TEST_CASE("spiral stairs: a 1-grid along the screw motion with one unit per step", "[grammar][grid]") {
   // 30 and 20 steps climb more than one turn: a full turn (12 or 8 steps) is also a translation
-  // along the axis, with 2 units; the screw's units are the steps.
-  for (const auto& [steps, per_turn] : std::vector<std::pair<int, int>>{{12, 12}, {30, 12}, {20, 8}}) {
+  // along the axis, with 2 units; the screw's units are the steps. Above 3 steps of 120 degrees
+  // the column rises 1 m (5 pitches) more: its faceted slabs, turned onto each other by the
+  // screw, are an extrusion, no unit.
+  for (const auto& [steps, per_turn] : std::vector<std::pair<int, int>>{{12, 12}, {30, 12}, {20, 8}, {3, 3}}) {
     CAPTURE(steps, per_turn);
     const Analysis a = analyze_asset("spiral_stairs", {{"steps", steps}, {"steps_per_turn", per_turn}});
     REQUIRE(a.grids.size() == 1);
