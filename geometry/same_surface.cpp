@@ -128,15 +128,12 @@ constexpr std::size_t kNearPairsTested = 1u << 22;
 std::vector<std::size_t> near_triangles(const TriangleMesh& from, const std::vector<std::size_t>& from_triangles,
                                         const TriangleMesh& to, const std::vector<std::size_t>& to_triangles, double reach) {
   if (from_triangles.empty()) return {};
-  const Vec3 margin = Vec3::Constant(reach);
   auto box = [](const TriangleMesh& mesh, std::size_t t) {
     BoundingBox b;
     for (const Vec3& p : mesh.corners(t)) b.add(p);
     return b;
   };
-  auto meet = [&](const BoundingBox& x, const BoundingBox& y) {
-    return ((x.min - margin).array() <= y.max.array()).all() && (y.min.array() <= (x.max + margin).array()).all();
-  };
+  auto meet = [&](const BoundingBox& x, const BoundingBox& y) { return boxes_within(x, y, reach); };
   std::vector<BoundingBox> from_boxes;
   BoundingBox all;
   for (std::size_t t : from_triangles) {
@@ -159,18 +156,18 @@ std::vector<std::size_t> near_triangles(const TriangleMesh& from, const std::vec
 // surface is sampled on cells grown to stay within this many (its test then allows more).
 constexpr double kMostSurfaceCells = 1 << 20;
 
-// One side of a comparison: triangles of `from` that must be covered by the listed ones of `to`.
+// One side of a comparison: triangles of `from` (of total `area`, model units^2) that must be
+// covered by the listed ones of `to`.
 struct CoverTest {
   const TriangleMesh* from;
   std::vector<std::size_t> from_triangles;
+  double area = 0.0;
   const TriangleMesh* to;
   std::vector<std::size_t> to_triangles;
 
   // Whether every cell of edge `cell` (grown for large surfaces, kMostSurfaceCells) the `from`
   // triangles pass through lies within `rings` cells of one the `to` triangles pass through.
   bool holds(double cell, std::int64_t rings) const {
-    double area = 0.0;
-    for (std::size_t t : from_triangles) area += 0.5 * from->area_vector(t).norm();
     const double sampled = std::max(cell, std::sqrt(area / kMostSurfaceCells));
     return cells_covered(surface_cells(*from, from_triangles, sampled), surface_cells(*to, to_triangles, sampled), rings);
   }
@@ -210,8 +207,10 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
                                                      std::tuple{&b, &triangles_b, &twin_b, &a, &part_a.triangles}}) {
       std::vector<std::size_t> rest = without_twins(*from_all, *twin);
       if (rest.empty()) continue;
+      double area = 0.0;
+      for (std::size_t t : rest) area += 0.5 * from->area_vector(t).norm();
       std::vector<std::size_t> near = near_triangles(*from, rest, *to, *to_all, 2.0 * tolerance);
-      tests.push_back(CoverTest{from, std::move(rest), to, std::move(near)});
+      tests.push_back(CoverTest{from, std::move(rest), area, to, std::move(near)});
     }
   }
   // Surfaces that pass on cells of tolerance / 2 lie within about 1.7 tolerance of each other,

@@ -39,6 +39,15 @@ struct BoundingBox {
   Vec3 corner(int index) const {
     return {(index & 1) ? max.x() : min.x(), (index & 2) ? max.y() : min.y(), (index & 4) ? max.z() : min.z()};
   }
+  /// The box moved by `shift` (model units).
+  BoundingBox shifted(const Vec3& shift) const { return {min + shift, max + shift}; }
 };
+
+/// Whether boxes a and b lie less than `distance` (model units) apart along every axis: a grown
+/// by `distance` overlaps b's interior.
+inline bool boxes_within(const BoundingBox& a, const BoundingBox& b, double distance) {
+  const Vec3 grow = Vec3::Constant(distance);
+  return (a.min.array() < (b.max + grow).array()).all() && (b.min.array() < (a.max + grow).array()).all();
+}
 
 }  // namespace dg

@@ -461,12 +461,6 @@ struct Extent {
   double weighted_centre = 0.0, area = 0.0;  // area-weighted position of the triangle centres
 };
 
-// Whether two boxes, the first moved by `shift` and both grown by `margin`, overlap.
-bool boxes_meet(const BoundingBox& a, const Vec3& shift, const BoundingBox& b, double margin) {
-  return ((a.min + shift).array() < (b.max + Vec3::Constant(2 * margin)).array()).all() &&
-         (b.min.array() < (a.max + shift + Vec3::Constant(2 * margin)).array()).all();
-}
-
 // Places the groups of parts kept whole along `direction` (found on the rest of the model): a
 // group whose centre lies before the middle of the units goes with the head, else with the tail.
 // Fails when no unit holds a part (not kept whole) that lies inside it, or a group reaches across
@@ -517,7 +511,7 @@ std::optional<int> place_whole_parts(GridDirection& direction, const TriangleMes
   for (int units = direction.count - 1; units >= fewest; --units) {
     const Vec3 back = -(direction.count - units) * direction.translation;
     const bool meets = std::any_of(tail.begin(), tail.end(), [&](const Extent* t) {
-      return std::any_of(head.begin(), head.end(), [&](const Extent* h) { return boxes_meet(t->box, back, h->box, r); });
+      return std::any_of(head.begin(), head.end(), [&](const Extent* h) { return boxes_within(t->box.shifted(back), h->box, 2.0 * r); });
     });
     if (meets) {
       fewest = units + 1;

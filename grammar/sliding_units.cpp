@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <map>
 #include <numbers>
 #include <utility>
@@ -27,21 +26,20 @@ bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction) 
   const double lo = direction.cut + direction.head_units * direction.pitch, hi = lo + direction.pitch;
   const ScrewParameters screw = screw_parameters(direction.motion);
   const bool translation = screw.angle < 1e-12;
-  // Velocity fields tested: the motion's, and a screw's slide alone (a faceted column turned by
-  // the screw onto itself is an extrusion along the axis, yet its facets face the turn).
-  const std::array<std::function<Vec3(const Vec3&)>, 2> fields{
-      [&](const Vec3& x) -> Vec3 {
-        if (translation) return direction.motion.translation;
-        return screw.angle * screw.axis.cross(x - screw.axis_point) + screw.slide * screw.axis;
-      },
-      [&](const Vec3&) -> Vec3 { return screw.axis; }};
+  // Velocity fields tested: 0 the motion's, 1 (screws only) its slide alone (a faceted column
+  // turned by the screw onto itself is an extrusion along the axis, yet its facets face the turn).
   const std::size_t field_count = translation ? 1 : 2;
+  auto velocity = [&](std::size_t field, const Vec3& x) -> Vec3 {
+    if (translation) return direction.motion.translation;
+    if (field == 1) return screw.axis;
+    return screw.angle * screw.axis.cross(x - screw.axis_point) + screw.slide * screw.axis;
+  };
   // Not parallel to the velocity at either end (its direction, unit).
   auto crosses_flow = [&](std::size_t field, const Vec3& a, const Vec3& b) {
     const Vec3 along = (b - a).normalized();
     const std::array<Vec3, 2> ends{a, b};
     return std::any_of(ends.begin(), ends.end(), [&](const Vec3& x) {
-      const Vec3 v = fields[field](x);
+      const Vec3 v = velocity(field, x);
       return v.norm() > 0.0 && along.cross(v.normalized()).norm() > kTangent;
     });
   };
@@ -68,7 +66,7 @@ bool unit_only_slides(const TriangleMesh& mesh, const GridDirection& direction) 
       const std::array<Vec3, 3> corners{a, b, c};
       for (std::size_t f = 0; f < field_count; ++f) {
         const bool faces = std::any_of(corners.begin(), corners.end(), [&](const Vec3& x) {
-          const Vec3 v = fields[f](x);
+          const Vec3 v = velocity(f, x);
           return v.norm() > 0.0 && std::abs(normal.dot(v.normalized())) > kTangent;
         });
         if (faces) facing[f] += inside;
