@@ -219,6 +219,87 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     return true;
   };
 
+  // Planes that hold a whole face: a cut there would leave the face on either side by rounding.
+  std::vector<double> face_planes;
+  const TriangleMesh& mesh = prepared.model.mesh;
+  const double in_plane = 1e-6 * surface.eps();
+  for (const Triangle& tri : mesh.triangles) {
+    const double a = d.dot(mesh.positions[tri[0]]), b = d.dot(mesh.positions[tri[1]]), c = d.dot(mesh.positions[tri[2]]);
+    if (std::max({a, b, c}) - std::min({a, b, c}) <= in_plane) face_planes.push_back(a);
+  }
+  std::sort(face_planes.begin(), face_planes.end());
+  auto holds_a_face = [&](double plane) {
+    const auto it = std::lower_bound(face_planes.begin(), face_planes.end(), plane - in_plane);
+    return it != face_planes.end() && *it <= plane + in_plane;
+  };
+
+  // A translation's generator is kept exact (no rotation noise from the detector's fit).
+  const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
+  // The chain starting at `first` with `count` units, its repeated unit chosen and (with a copy
+  // tolerance) the copies beyond its planes counted.
+  auto settled = [&](double first, int count) {
+    GridDirection direction{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
+                            .symmetry = symmetry_index};
+    choose_repeated_unit(direction, slab_cells, half, mesh);
+    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance);
+    return direction;
+  };
+  struct Chain {
+    double first = 0.0;
+    double phase = 0.0;  // of its planes, in [0, pitch) from the model's lowest point
+    int count = 0;
+    double clearance = -1.0;
+    std::size_t crossed = 0;
+    int vertices = 0;
+  };
+  // Without a chain of min_repeats units between planes in the r-symmetric area, the model may
+  // still hold that many copies side by side: the area between them can be eroded by r where one
+  // copy's outer boards lie close to the next copy's asymmetric end (a shelf of two columns: its
+  // middle divider is thinner than 2r, and the second column maps beyond the model). Seeds are
+  // runs of slabs whose cells map onto the next slab's (slabs_repeat) at planes that hold no
+  // face; each seed's first slab becomes the unit and its copies are verified on the mesh and
+  // counted as in count_end_units. Seeds are ranked like chains (more slabs, smaller seams, more
+  // vertices on the planes), one per stretch of phases, kShorterChainsCounted of them verified;
+  // the most units wins, unless its unit only slides along itself.
+  auto copied_chain = [&]() -> std::optional<GridDirection> {
+    if (points || copy_tolerance <= 0.0) return std::nullopt;
+    auto maps_onto_next = [&](double first) {
+      const auto [asymmetric_cells, cells] = slab_cells.count(first + half, first + pitch - half);
+      return cells > 0 && static_cast<double>(asymmetric_cells) <= max_slab_asymmetry * static_cast<double>(cells);
+    };
+    std::vector<Chain> seeds;
+    for (const auto& [phase, vertices] : phases)
+      for (double first = lowest + phase - pitch; first <= highest; first += pitch) {
+        if (!maps_onto_next(first) || maps_onto_next(first - pitch)) continue;
+        int count = 2;  // slabs: those that map onto the next, and the last image
+        while (maps_onto_next(first + (count - 1) * pitch)) ++count;
+        if (count < min_repeats) continue;
+        bool on_face = false;
+        std::size_t crossed = 0;
+        for (int k = 0; k <= count; ++k) {
+          on_face = on_face || holds_a_face(first + k * pitch);
+          crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
+        }
+        if (!on_face) seeds.push_back(Chain{first, phase, count, 0.0, crossed, vertices});
+      }
+    std::stable_sort(seeds.begin(), seeds.end(), [](const Chain& a, const Chain& b) {
+      if (a.count != b.count) return a.count > b.count;
+      return a.crossed != b.crossed ? a.crossed < b.crossed : a.vertices > b.vertices;
+    });
+    std::set<std::ptrdiff_t> stretches;
+    std::vector<GridDirection> verified;
+    for (const Chain& seed : seeds) {
+      if (stretches.size() == kShorterChainsCounted) break;
+      if (!stretches.insert(phase_stretch(seed.phase)).second) continue;
+      GridDirection direction = settled(seed.first, 1);
+      if (direction.count >= min_repeats) verified.push_back(std::move(direction));
+    }
+    std::stable_sort(verified.begin(), verified.end(), [](const GridDirection& a, const GridDirection& b) { return a.count > b.count; });
+    for (GridDirection& direction : verified)
+      if (!unit_only_slides(mesh, direction)) return std::move(direction);
+    return std::nullopt;
+  };
+
   // A quick test whether any run of min_repeats units may exist, before the costly parts (the
   // image of the r-symmetric area, the asymmetry near the first plane): their tests only take
   // planes away, so without such a run here there is none below.
@@ -231,7 +312,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       while (free < min_repeats && first + free * pitch <= highest && !forward.contains(first + free * pitch)) ++free;
       may_repeat = free == min_repeats && slabs_repeat(first, min_repeats - 1);
     }
-  if (!may_repeat) return std::nullopt;
+  if (!may_repeat) return copied_chain();
 
   std::vector<char> in_image(surface.cell_count(), 0);
   const CellMatcher matcher(surface, nullptr);
@@ -260,31 +341,6 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   backward.finish();
   first_plane.finish();
 
-  // Planes that hold a whole face: a cut there would leave the face on either side by rounding.
-  std::vector<double> face_planes;
-  const TriangleMesh& mesh = prepared.model.mesh;
-  const double in_plane = 1e-6 * surface.eps();
-  for (const Triangle& tri : mesh.triangles) {
-    const double a = d.dot(mesh.positions[tri[0]]), b = d.dot(mesh.positions[tri[1]]), c = d.dot(mesh.positions[tri[2]]);
-    if (std::max({a, b, c}) - std::min({a, b, c}) <= in_plane) face_planes.push_back(a);
-  }
-  std::sort(face_planes.begin(), face_planes.end());
-  auto holds_a_face = [&](double plane) {
-    const auto it = std::lower_bound(face_planes.begin(), face_planes.end(), plane - in_plane);
-    return it != face_planes.end() && *it <= plane + in_plane;
-  };
-
-  // A translation's generator is kept exact (no rotation noise from the detector's fit).
-  const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-  // The chain starting at `first` with `count` units, its repeated unit chosen and (with a copy
-  // tolerance) the copies beyond its planes counted.
-  auto settled = [&](double first, int count) {
-    GridDirection direction{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
-                            .symmetry = symmetry_index};
-    choose_repeated_unit(direction, slab_cells, half, mesh);
-    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance);
-    return direction;
-  };
   // The best chain whose first unit lies outside every range in `sliding`. Ranking: more units
   // between planes; then, when the best by the rest counts copies beyond its planes or leaves room
   // for them (the phase decides whether whole copies remain at the ends), more units in all
@@ -292,14 +348,6 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   // smallest seams (fewest surface cells crossed by the planes); then planes through more existing
   // vertices.
   const double wanted_clearance = surface.r();
-  struct Chain {
-    double first = 0.0;
-    double phase = 0.0;  // of its planes, in [0, pitch) from the model's lowest point
-    int count = 0;
-    double clearance = -1.0;
-    std::size_t crossed = 0;
-    int vertices = 0;
-  };
   auto best_chain = [&](const std::vector<std::pair<double, double>>& sliding) -> std::optional<GridDirection> {
     auto excluded = [&](double first) {
       return std::any_of(sliding.begin(), sliding.end(),
@@ -373,6 +421,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   constexpr int kSlidingChainsTried = 4;
   std::vector<std::pair<double, double>> sliding;
   std::optional<GridDirection> best = best_chain(sliding);
+  if (!best) return copied_chain();
   while (best && !points && unit_only_slides(mesh, *best)) {
     if (static_cast<int>(sliding.size()) + 1 >= kSlidingChainsTried) return std::nullopt;
     sliding.emplace_back(best->cut, best->cut + best->count * pitch);

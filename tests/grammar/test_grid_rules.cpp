@@ -103,8 +103,9 @@ TEST_CASE("facade(3 x 4): one 2-grid along the column and row pitches with the g
 
 TEST_CASE("shelf(n x m): a 2-grid along the column and row pitches that resizes into the generator's shelves", "[grammar][grid]") {
   // Columns repeat every cell width plus a divider (0.35 + 0.018), rows every cell height plus a
-  // board (0.3 + 0.018).
-  for (const auto& [columns, rows] : std::vector<std::pair<int, int>>{{3, 4}, {5, 3}}) {
+  // board (0.3 + 0.018). Two columns or two rows: the middle divider lies within r of the second
+  // unit's asymmetric side, so only planes in the eroded area frame the two copies.
+  for (const auto& [columns, rows] : std::vector<std::pair<int, int>>{{3, 4}, {5, 3}, {4, 2}, {2, 5}}) {
     CAPTURE(columns, rows);
     const Analysis a = analyze_asset("shelf", {{"columns", columns}, {"rows", rows}});
     REQUIRE(a.grids.size() == 1);
