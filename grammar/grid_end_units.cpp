@@ -10,7 +10,8 @@
 
 namespace dg {
 
-int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance) {
+int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
+                    std::span<const std::uint32_t> material_classes) {
   const Vec3& d = direction.direction;
   const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
@@ -25,7 +26,10 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
   };
   auto slab = [&](int k) -> const TriangleMesh& {
     auto [it, added] = meshes.try_emplace(k);
-    if (added) it->second = mesh_between_planes(mesh, d, start + k * p, start + (k + 1) * p, snap);
+    if (!added) return it->second;
+    TriangleMesh& cut = it->second = mesh_between_planes(mesh, d, start + k * p, start + (k + 1) * p, snap);
+    if (material_classes.empty()) cut.materials.clear();
+    for (std::uint32_t& m : cut.materials) m = material_classes[m];
     return it->second;
   };
   // Whether slab k, moved by the motion, is slab k + 1.

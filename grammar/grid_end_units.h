@@ -4,6 +4,9 @@
 
 #include "grammar/grid_rules.h"
 
+#include <cstdint>
+#include <span>
+
 namespace dg {
 
 /// Relative difference of surface area below which two slabs of a grid count as equally large
@@ -17,7 +20,10 @@ inline constexpr double kSameSlabArea = 1e-4;
 /// second layer of faces counts), the first plane moves back one pitch and the slab joins the count as a
 /// unit kept in the head; likewise after the last plane for the tail. Resizing to the new count
 /// still gives the exemplar (head and tail pieces are unchanged), and each further unit adds one
-/// copy of the repeated unit. Returns the units added.
-int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance);
+/// copy of the repeated unit. Materials are compared by `material_classes` (the class of each
+/// material index, as the symmetries matched them: random tints grouped as one); empty (materials
+/// not matched) compares the shapes alone. Returns the units added.
+int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
+                    std::span<const std::uint32_t> material_classes);
 
 }  // namespace dg

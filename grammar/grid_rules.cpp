@@ -241,7 +241,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     GridDirection direction{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
                             .symmetry = symmetry_index};
     choose_repeated_unit(direction, slab_cells, half, mesh);
-    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance);
+    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance, prepared.material_classes);
     return direction;
   };
   struct Chain {

@@ -76,9 +76,9 @@ TEST_CASE("material hint: windows in three random tints give their grid once the
   REQUIRE(hint);
   REQUIRE(hint->groups.size() == 1);
   CHECK(hint->groups[0] == std::vector<std::string>{"tint0", "tint1", "tint2"});
-  // The grouped wall's grid: its end cells keep their own tints in the mesh, so they are no
-  // copies of their neighbours, and n cells are n - 1 repeated units in each direction.
-  CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{rows - 1, columns - 1}});
+  // The grouped wall's grid: one unit per cell, the end cells (within r of the wall's edges, no
+  // plane crosses them) counted as copies because their tints belong to the group.
+  CHECK(sorted(hint->grid_counts) == std::vector<std::vector<int>>{{rows, columns}});
   // No hint (no search) when analysis already found a grid or materials were matched.
   CHECK(dg::material_hint_applies(prepared, {}, 0));
   CHECK_FALSE(dg::material_hint_applies(prepared, {}, 1));
