@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -13,13 +14,40 @@
 namespace dg {
 namespace {
 
+// Edge of the blocks of cells that limit sampling to where it can matter (in cells).
+constexpr std::int64_t kBlockCells = 16;
+
+CellKey block_of(const CellKey& k) {
+  auto floor_div = [](std::int64_t v) { return v >= 0 ? v / kBlockCells : -((-v + kBlockCells - 1) / kBlockCells); };
+  return {floor_div(k[0]), floor_div(k[1]), floor_div(k[2])};
+}
+
+// The blocks that hold `cells` and their 26 neighbours: every cell within kBlockCells cells of
+// one of `cells` lies in one of them. Sorted, without repeats.
+std::vector<CellKey> blocks_around(const std::vector<CellKey>& cells) {
+  std::vector<CellKey> held;
+  for (const CellKey& k : cells) held.push_back(block_of(k));
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  std::vector<CellKey> blocks;
+  for (const CellKey& b : held)
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) blocks.push_back({b[0] + dx, b[1] + dy, b[2] + dz});
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+  return blocks;
+}
+
 // The cells (cubes of edge `cell`, model units) that points of the listed triangles of `mesh`
 // fall in, sampled on each triangle in rows parallel to its longest edge, at most one cell apart
 // along and across them (so a sliver costs as few samples as its area needs; a cell the surface
-// only clips may be missed, but a neighbour of it is not); sorted, without repeats.
-std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, double cell) {
+// only clips may be missed, but a neighbour of it is not); sorted, without repeats. With
+// `blocks` (sorted, see blocks_around), only the cells inside those blocks: a row skips the
+// samples of each other block it crosses (the same samples are taken inside them).
+std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, double cell,
+                                   const std::vector<CellKey>* blocks = nullptr) {
   std::vector<CellKey> cells;
-  auto add = [&](const Vec3& p) { cells.push_back(cell_key(p, cell)); };
   auto compact = [&] {
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
@@ -37,7 +65,27 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
       const double s = static_cast<double>(k) / rows;  // row from a-b (s = 0) to c (s = 1)
       const Vec3 from = a + s * (c - a), to = b + s * (c - b);
       const int steps = std::max(1, static_cast<int>(std::ceil((1.0 - s) * length / cell)));
-      for (int i = 0; i <= steps; ++i) add(from + (static_cast<double>(i) / steps) * (to - from));
+      const Vec3 along = to - from;
+      for (int i = 0; i <= steps;) {
+        const Vec3 p = from + (static_cast<double>(i) / steps) * along;
+        const CellKey key = cell_key(p, cell);
+        const CellKey block = block_of(key);
+        if (!blocks || std::binary_search(blocks->begin(), blocks->end(), block)) {
+          cells.push_back(key);
+          ++i;
+          continue;
+        }
+        // Where the row leaves this block (a box, so the samples before lie inside it).
+        double leaves = std::numeric_limits<double>::infinity();
+        for (int axis = 0; axis < 3; ++axis) {
+          const double lo = static_cast<double>(block[static_cast<std::size_t>(axis)] * kBlockCells) * cell;
+          const double hi = lo + static_cast<double>(kBlockCells) * cell;
+          if (along[axis] > 0.0) leaves = std::min(leaves, (hi - from[axis]) / along[axis]);
+          if (along[axis] < 0.0) leaves = std::min(leaves, (lo - from[axis]) / along[axis]);
+        }
+        const double next = std::floor(leaves * steps);
+        i = next > static_cast<double>(steps) ? steps + 1 : std::max(i + 1, static_cast<int>(next));
+      }
     }
     // Many samples fall in one cell: repeats go whenever the list doubles, so memory follows the
     // cells, not the samples.
@@ -166,10 +214,13 @@ struct CoverTest {
   std::vector<std::size_t> to_triangles;
 
   // Whether every cell of edge `cell` (grown for large surfaces, kMostSurfaceCells) the `from`
-  // triangles pass through lies within `rings` cells of one the `to` triangles pass through.
+  // triangles pass through lies within `rings` (< kBlockCells) cells of one the `to` triangles
+  // pass through; the `to` triangles are sampled only in the blocks around the `from` cells.
   bool holds(double cell, std::int64_t rings) const {
     const double sampled = std::max(cell, std::sqrt(area / kMostSurfaceCells));
-    return cells_covered(surface_cells(*from, from_triangles, sampled), surface_cells(*to, to_triangles, sampled), rings);
+    const std::vector<CellKey> from_cells = surface_cells(*from, from_triangles, sampled);
+    const std::vector<CellKey> blocks = blocks_around(from_cells);
+    return cells_covered(from_cells, surface_cells(*to, to_triangles, sampled, &blocks), rings);
   }
 };
 

@@ -196,10 +196,27 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     lowest = std::min(lowest, s);
     highest = std::max(highest, s);
   }
-  std::map<double, int> phases;  // phase in [0, pitch) -> vertices on a plane at that phase
+  std::map<double, int> phases;  // phase in [0, pitch) (up to rounding) -> vertices on a plane there
   const double step = std::min(surface.eps() / 4.0, pitch / 64.0);
   for (double phase = 0.0; phase < pitch; phase += step) phases.emplace(phase, 0);
-  for (const auto& [s, n] : vertex_offsets) phases[std::fmod(s - lowest, pitch)] += n;
+  // Vertices whose phases differ by rounding alone (the seams of a turned model) share one: a
+  // plane there passes through all of them, within the cuts' snapping distance.
+  const double same_phase = 1e-7 * surface.eps();
+  std::vector<std::pair<double, int>> at_vertices;
+  for (const auto& [s, n] : vertex_offsets) {
+    const double phase = std::fmod(s - lowest, pitch);
+    at_vertices.emplace_back(phase > pitch - same_phase ? phase - pitch : phase, n);
+  }
+  std::sort(at_vertices.begin(), at_vertices.end());
+  for (std::size_t i = 0; i < at_vertices.size();) {
+    std::size_t end = i + 1;
+    while (end < at_vertices.size() && at_vertices[end].first - at_vertices[end - 1].first <= same_phase) ++end;
+    double sum = 0.0;
+    int vertices = 0;
+    for (std::size_t j = i; j < end; ++j) sum += at_vertices[j].first, vertices += at_vertices[j].second;
+    phases[sum / static_cast<double>(end - i)] += vertices;
+    i = end;
+  }
   // Stretches of phases between those of vertices: index of the first vertex phase at or above
   // `phase`, doubled, plus one when the phase is a vertex phase.
   std::vector<double> vertex_phases;
@@ -235,11 +252,15 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
 
   // A translation's generator is kept exact (no rotation noise from the detector's fit).
   const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
-  // The chain starting at `first` with `count` units, its repeated unit chosen and (with a copy
-  // tolerance) the copies beyond its planes counted.
+  // The chain starting at `first` with `count` units, its first unit the repeated one.
+  auto unsettled = [&](double first, int count) {
+    return GridDirection{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
+                         .symmetry = symmetry_index};
+  };
+  // That chain with its repeated unit chosen and (with a copy tolerance) the copies beyond its
+  // planes counted.
   auto settled = [&](double first, int count) {
-    GridDirection direction{.motion = motion, .translation = t, .direction = d, .pitch = pitch, .cut = first, .count = count,
-                            .symmetry = symmetry_index};
+    GridDirection direction = unsettled(first, count);
     choose_repeated_unit(direction, slab_cells, half, mesh);
     if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance, prepared.material_classes);
     return direction;
@@ -252,16 +273,18 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     std::size_t crossed = 0;
     int vertices = 0;
   };
-  // Without a chain of min_repeats units between planes in the r-symmetric area, the model may
-  // still hold that many copies side by side: the area between them can be eroded by r where one
-  // copy's outer boards lie close to the next copy's asymmetric end (a shelf of two columns: its
-  // middle divider is thinner than 2r, and the second column maps beyond the model). Seeds are
-  // runs of slabs whose cells map onto the next slab's (slabs_repeat) at planes that hold no
+  // A chain of more than `more_than` units that are copies side by side, though no chain of
+  // them lies between planes in the r-symmetric area: the area between copies can be eroded by r
+  // where one copy's outer boards lie close to the next copy's asymmetric end (a shelf of two
+  // columns: its middle divider is thinner than 2r, and the second column maps beyond the model),
+  // or be broken up where thin parts cross the voxels obliquely (a turned shelf's dividers). Seeds
+  // are runs of slabs whose cells map onto the next slab's (slabs_repeat) at planes that hold no
   // face; each seed's first slab becomes the unit and its copies are verified on the mesh and
-  // counted as in count_end_units. Seeds are ranked like chains (more slabs, smaller seams, more
-  // vertices on the planes), one per stretch of phases, kShorterChainsCounted of them verified;
-  // the most units wins, unless its unit only slides along itself.
-  auto copied_chain = [&]() -> std::optional<GridDirection> {
+  // counted as in count_end_units. Seeds are ranked by more slabs, then more vertices on the
+  // planes (cuts through existing seams leave copies cut alike), then smaller seams; one per
+  // stretch of phases whose unit does not only slide along itself is verified, up to
+  // kShorterChainsCounted of them, and the most units wins.
+  auto copied_chain = [&](int more_than) -> std::optional<GridDirection> {
     if (points || copy_tolerance <= 0.0) return std::nullopt;
     auto maps_onto_next = [&](double first) {
       const auto [asymmetric_cells, cells] = slab_cells.count(first + half, first + pitch - half);
@@ -273,7 +296,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
         if (!maps_onto_next(first) || maps_onto_next(first - pitch)) continue;
         int count = 2;  // slabs: those that map onto the next, and the last image
         while (maps_onto_next(first + (count - 1) * pitch)) ++count;
-        if (count < min_repeats) continue;
+        if (count < min_repeats || count <= more_than) continue;
         bool on_face = false;
         std::size_t crossed = 0;
         for (int k = 0; k <= count; ++k) {
@@ -284,20 +307,23 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       }
     std::stable_sort(seeds.begin(), seeds.end(), [](const Chain& a, const Chain& b) {
       if (a.count != b.count) return a.count > b.count;
-      return a.crossed != b.crossed ? a.crossed < b.crossed : a.vertices > b.vertices;
+      return a.vertices != b.vertices ? a.vertices > b.vertices : a.crossed < b.crossed;
     });
     std::set<std::ptrdiff_t> stretches;
-    std::vector<GridDirection> verified;
+    std::size_t verified = 0;
+    std::optional<GridDirection> best;
     for (const Chain& seed : seeds) {
-      if (stretches.size() == kShorterChainsCounted) break;
-      if (!stretches.insert(phase_stretch(seed.phase)).second) continue;
+      // A seed's slabs bound its copies: none of the rest can reach further.
+      if (verified == kShorterChainsCounted || (best && best->count >= seed.count)) break;
+      // The unit stays the seed's first slab however far the copies reach, so an extrusion is
+      // told before the costly check.
+      if (!stretches.insert(phase_stretch(seed.phase)).second || unit_only_slides(mesh, unsettled(seed.first, 1))) continue;
+      ++verified;
       GridDirection direction = settled(seed.first, 1);
-      if (direction.count >= min_repeats) verified.push_back(std::move(direction));
+      if (direction.count >= min_repeats && direction.count > more_than && (!best || direction.count > best->count))
+        best = std::move(direction);
     }
-    std::stable_sort(verified.begin(), verified.end(), [](const GridDirection& a, const GridDirection& b) { return a.count > b.count; });
-    for (GridDirection& direction : verified)
-      if (!unit_only_slides(mesh, direction)) return std::move(direction);
-    return std::nullopt;
+    return best;
   };
 
   // A quick test whether any run of min_repeats units may exist, before the costly parts (the
@@ -312,7 +338,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       while (free < min_repeats && first + free * pitch <= highest && !forward.contains(first + free * pitch)) ++free;
       may_repeat = free == min_repeats && slabs_repeat(first, min_repeats - 1);
     }
-  if (!may_repeat) return copied_chain();
+  if (!may_repeat) return copied_chain(0);
 
   std::vector<char> in_image(surface.cell_count(), 0);
   const CellMatcher matcher(surface, nullptr);
@@ -421,12 +447,15 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   constexpr int kSlidingChainsTried = 4;
   std::vector<std::pair<double, double>> sliding;
   std::optional<GridDirection> best = best_chain(sliding);
-  if (!best) return copied_chain();
+  if (!best) return copied_chain(0);
   while (best && !points && unit_only_slides(mesh, *best)) {
     if (static_cast<int>(sliding.size()) + 1 >= kSlidingChainsTried) return std::nullopt;
     sliding.emplace_back(best->cut, best->cut + best->count * pitch);
     best = best_chain(sliding);
   }
+  // Room for another unit: copies side by side at another phase may reach further.
+  if (best && (best->count + 1) * pitch <= highest - lowest)
+    if (std::optional<GridDirection> copied = copied_chain(best->count)) best = std::move(copied);
   return best;
 }
 

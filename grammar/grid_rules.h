@@ -89,9 +89,9 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// cuts (a row of parts, not only walls and rails sliding along themselves). A mesh's chain of
 /// planes whose unit only slides along itself (grammar/sliding_units.h) gives way to the next best
 /// chain, and copies of the unit beyond the first and last plane join the count
-/// (grammar/grid_end_units.h); without a chain of min_repeats units, a mesh's slabs that are
-/// copies of the next side by side (checked on the mesh, planes anywhere but on a face) give the
-/// direction. Families are examined
+/// (grammar/grid_end_units.h); a mesh's slabs that are copies of the next side by side (checked
+/// on the mesh, planes anywhere but on a face) give the direction when no chain of min_repeats
+/// units lies in the r-symmetric area or when they reach more units. Families are examined
 /// in parallel; the result does not depend on the thread count. `progress` hears stage "grid
 /// rules" with the fraction of repetition families examined (after each parallel batch), then 1.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
