@@ -320,6 +320,9 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       if (!stretches.insert(phase_stretch(seed.phase)).second || unit_only_slides(mesh, unsettled(seed.first, 1))) continue;
       ++verified;
       GridDirection direction = settled(seed.first, 1);
+      // The copies were found beyond the seed's unit; those that also repeat cell for cell become
+      // repeated units instead of being kept once.
+      choose_repeated_unit(direction, slab_cells, half, mesh);
       if (direction.count >= min_repeats && direction.count > more_than && (!best || direction.count > best->count))
         best = std::move(direction);
     }
