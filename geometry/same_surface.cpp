@@ -69,8 +69,13 @@ std::vector<CellKey> surface_cells(const TriangleMesh& mesh, const std::vector<s
       for (int i = 0; i <= steps;) {
         const Vec3 p = from + (static_cast<double>(i) / steps) * along;
         const CellKey key = cell_key(p, cell);
+        if (!blocks) {
+          cells.push_back(key);
+          ++i;
+          continue;
+        }
         const CellKey block = block_of(key);
-        if (!blocks || std::binary_search(blocks->begin(), blocks->end(), block)) {
+        if (std::binary_search(blocks->begin(), blocks->end(), block)) {
           cells.push_back(key);
           ++i;
           continue;

@@ -250,6 +250,17 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     return it != face_planes.end() && *it <= plane + in_plane;
   };
 
+  // Surface cells crossed by the planes `first` + k pitch, k = 0 .. `count` (the seams' size),
+  // or nothing when one of them holds a face.
+  auto seam_cells = [&](double first, int count) -> std::optional<std::size_t> {
+    std::size_t crossed = 0;
+    for (int k = 0; k <= count; ++k) {
+      if (holds_a_face(first + k * pitch)) return std::nullopt;
+      crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
+    }
+    return crossed;
+  };
+
   // A translation's generator is kept exact (no rotation noise from the detector's fit).
   const RigidTransform motion = symmetry.kind == "translation" ? RigidTransform{Mat3::Identity(), t} : symmetry.transform;
   // The chain starting at `first` with `count` units, its first unit the repeated one.
@@ -259,10 +270,13 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   };
   // That chain with its repeated unit chosen and (with a copy tolerance) the copies beyond its
   // planes counted.
+  auto count_copies_beyond = [&](GridDirection& direction) {
+    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance, prepared.material_classes);
+  };
   auto settled = [&](double first, int count) {
     GridDirection direction = unsettled(first, count);
     choose_repeated_unit(direction, slab_cells, half, mesh);
-    if (copy_tolerance > 0.0) count_end_units(direction, mesh, copy_tolerance, prepared.material_classes);
+    count_copies_beyond(direction);
     return direction;
   };
   struct Chain {
@@ -286,9 +300,8 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   // kShorterChainsCounted of them, and the most units wins.
   auto copied_chain = [&](int more_than) -> std::optional<GridDirection> {
     if (points || copy_tolerance <= 0.0) return std::nullopt;
-    auto maps_onto_next = [&](double first) {
-      const auto [asymmetric_cells, cells] = slab_cells.count(first + half, first + pitch - half);
-      return cells > 0 && static_cast<double>(asymmetric_cells) <= max_slab_asymmetry * static_cast<double>(cells);
+    auto maps_onto_next = [&](double first) {  // a slab with surface that maps onto the next
+      return slab_cells.count(first + half, first + pitch - half).second > 0 && slabs_repeat(first, 1);
     };
     std::vector<Chain> seeds;
     for (const auto& [phase, vertices] : phases)
@@ -297,13 +310,8 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
         int count = 2;  // slabs: those that map onto the next, and the last image
         while (maps_onto_next(first + (count - 1) * pitch)) ++count;
         if (count < min_repeats || count <= more_than) continue;
-        bool on_face = false;
-        std::size_t crossed = 0;
-        for (int k = 0; k <= count; ++k) {
-          on_face = on_face || holds_a_face(first + k * pitch);
-          crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-        }
-        if (!on_face) seeds.push_back(Chain{first, phase, count, 0.0, crossed, vertices});
+        if (const std::optional<std::size_t> crossed = seam_cells(first, count))
+          seeds.push_back(Chain{first, phase, count, 0.0, *crossed, vertices});
       }
     std::stable_sort(seeds.begin(), seeds.end(), [](const Chain& a, const Chain& b) {
       if (a.count != b.count) return a.count > b.count;
@@ -319,9 +327,10 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       // told before the costly check.
       if (!stretches.insert(phase_stretch(seed.phase)).second || unit_only_slides(mesh, unsettled(seed.first, 1))) continue;
       ++verified;
-      GridDirection direction = settled(seed.first, 1);
-      // The copies were found beyond the seed's unit; those that also repeat cell for cell become
+      // The copies are found beyond the seed's unit; those that also repeat cell for cell become
       // repeated units instead of being kept once.
+      GridDirection direction = unsettled(seed.first, 1);
+      count_copies_beyond(direction);
       choose_repeated_unit(direction, slab_cells, half, mesh);
       if (direction.count >= min_repeats && direction.count > more_than && (!best || direction.count > best->count))
         best = std::move(direction);
@@ -401,16 +410,13 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
             break;
           }
         if (count < 1) continue;
-        bool on_face = false;
-        for (int k = 0; k <= count; ++k) on_face = on_face || holds_a_face(first + k * pitch);
-        if (on_face) continue;
+        const std::optional<std::size_t> crossed = seam_cells(first, count);
+        if (!crossed) continue;
         double clearance = wanted_clearance;
         clearance = std::min(clearance, first_plane.clearance(first));
         for (int k = 1; k < count; ++k) clearance = std::min(clearance, forward.clearance(first + k * pitch));
         clearance = std::min(clearance, backward.clearance(first + count * pitch));
-        std::size_t crossed = 0;
-        for (int k = 0; k <= count; ++k) crossed += slab_cells.count(first + k * pitch - half, first + k * pitch + half).second;
-        chains.push_back(Chain{first, phase, count, clearance, crossed, vertices});
+        chains.push_back(Chain{first, phase, count, clearance, *crossed, vertices});
       }
     }
     if (chains.empty()) return std::nullopt;
