@@ -128,18 +128,21 @@ double area_of(const VoxelSurface& surface, const Cells& cells) {
   return area;
 }
 
-// Slippage dimension of the planes inside the band cells.
+// Slippage dimension of the planes inside the band cells: the motions that slide each connected
+// part of the band along itself (a site made of loops around several stems slides along them).
 std::size_t band_slippage(const VoxelSurface& surface, const Cells& band) {
-  std::vector<Vec3> points, normals;
+  std::size_t part_count = 0;
+  const std::vector<std::int32_t> part = label_components(surface, mask_of(band, surface.cell_count()), part_count);
+  std::vector<OrientedPoints> parts(part_count);
   for (std::uint32_t c : band) {
+    OrientedPoints& points = parts[static_cast<std::size_t>(part[c])];
     const Vec3 centre = surface.centre(c);
     for (const CellPlane& plane : surface.planes(c)) {
-      points.push_back(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
-      normals.push_back(plane.normal);
+      points.points.push_back(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
+      points.normals.push_back(plane.normal);
     }
   }
-  if (points.size() < 6) return 6;
-  return slippage(points, normals).dimension();
+  return joint_slippage_dimension(parts);
 }
 
 // Everything needed to evaluate docker candidates for one motion.

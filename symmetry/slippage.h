@@ -26,4 +26,16 @@ struct SlippageResult {
 /// scaled to unit mean radius first, so the result does not depend on model units.
 SlippageResult slippage(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, double threshold = 1e-3);
 
+/// Oriented points of one separate part (points and unit normals, same count).
+struct OrientedPoints {
+  std::vector<Vec3> points, normals;
+};
+
+/// Number of independent rigid motions that slide every part along itself at once: the
+/// intersection of each part's slippable motions (slippage() with `threshold`, each part at its
+/// own scale). Several small loops at one height around parallel stems slide only along the
+/// stems, although analysed as one set their thin band also seems to tilt. One part gives
+/// slippage(...).dimension(); parts with fewer than 6 points constrain nothing (no parts: 6).
+std::size_t joint_slippage_dimension(const std::vector<OrientedPoints>& parts, double threshold = 1e-3);
+
 }  // namespace dg
