@@ -697,7 +697,7 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     const SymmetryFamily& family = symmetries.families[f];
     if (found[f])
       (family.kind == "translation" ? translations : screws).push_back(*found[f]);
-    else if (family.kind == "translation" && static_cast<int>(family.members.size()) >= options.min_repeats)
+    else if (family.kind == "translation" && static_cast<int>(family.count) >= options.min_repeats)
       repeated_generators.push_back(family.members[members_by_power(family).front()]);
   }
   // Most units first; then combine independent translations into one grid.

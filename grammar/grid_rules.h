@@ -63,8 +63,9 @@ struct GridRule {
 
 struct GridOptions {
   /// A grid needs a direction with at least this many units. Further translations may join it
-  /// with a single unit when they repeat in the model (this many powers are symmetries) but
-  /// their planes fit only one unit across it.
+  /// with a single unit when they repeat in the model (its powers 1 .. this many are symmetries
+  /// that pin a unit, SymmetryFamily::count; a motion that only slides flat walls along
+  /// themselves does not repeat) but their planes fit only one unit across it.
   int min_repeats = 2;
   int max_count = 1000; ///< largest count offered to resize
   /// A slab counts as a copy of the next when at most this fraction of its surface cells lies

@@ -239,6 +239,32 @@ TEST_CASE("corpus: the Sweet Home 3D railing gives a 1-grid along the baluster p
   CHECK(balusters->count == 7);
 }
 
+TEST_CASE("corpus: Kenney building-small-c: a slide along its flat walls joins no grid", "[grammar][grid][corpus]") {
+  const std::optional<std::filesystem::path> building =
+      dg::test::corpus_file_if_present("meshes/arch-kenney-building-small-c/building-small-c.glb");
+  if (!building) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*building);
+  // Verifying every candidate finds t = (0.06, 0, 0): it slides the walls between the window
+  // columns along themselves (several of its powers match, none pins a unit in place).
+  dg::SymmetryOptions options;
+  options.max_verified = 400;
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared, options);
+  auto is_wall_slide = [&](const dg::DetectedSymmetry& s) {
+    return s.kind == "translation" && (s.transform.translation - Vec3(0.06, 0, 0)).norm() < 1e-3 &&
+           s.pinned_fraction < options.min_r_symmetric_fraction;
+  };
+  const bool slide_found = std::any_of(symmetries.symmetries.begin(), symmetries.symmetries.end(), is_wall_slide);
+  REQUIRE(slide_found);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  // Ground truth: the two middle floors repeat (0.4 apart); no column repeats across the
+  // whole building (the door and the shop window differ), so the grid has that direction only.
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const dg::GridDirection* floors = direction_along(grids[0], Vec3(0, 0.4, 0));
+  REQUIRE(floors != nullptr);
+  CHECK(floors->count == 2);
+}
+
 TEST_CASE("corpus: the Kenney metal gate gives a grid along the stake pitch with one unit per gap", "[grammar][grid][corpus]") {
   const std::optional<std::filesystem::path> gate = dg::test::corpus_file_if_present("meshes/arch-kenney-castle-metalgate/metal_gate.obj");
   if (!gate) return;
