@@ -110,15 +110,42 @@ Cells ring_around(const VoxelSurface& surface, const Cells& inside, const std::v
   return ring;
 }
 
+// Connected parts (26-adjacency within the band) of the ascending cells `band`: the part of
+// each band cell, in band order, and their number in `count`. Works within the band only (a
+// site's band is small next to the surface).
+std::vector<std::size_t> band_parts(const VoxelSurface& surface, const Cells& band, std::size_t& count) {
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> part(band.size(), kNone);
+  auto position = [&](std::uint32_t cell) -> std::size_t {
+    const auto it = std::lower_bound(band.begin(), band.end(), cell);
+    return it != band.end() && *it == cell ? static_cast<std::size_t>(it - band.begin()) : kNone;
+  };
+  count = 0;
+  std::vector<std::size_t> queue;
+  for (std::size_t start = 0; start < band.size(); ++start) {
+    if (part[start] != kNone) continue;
+    part[start] = count;
+    queue.assign(1, start);
+    for (std::size_t head = 0; head < queue.size(); ++head)
+      for (std::uint32_t n : surface.neighbours(band[queue[head]]))
+        if (const std::size_t i = position(n); i != kNone && part[i] == kNone) {
+          part[i] = count;
+          queue.push_back(i);
+        }
+    ++count;
+  }
+  return part;
+}
+
 // Whether a connected part of `band` (26-adjacency within the band) has no cell next to a cell
 // of `docker_mask`: a stretch of seam that borders nothing the operation replaces.
 bool has_part_away_from(const VoxelSurface& surface, const Cells& band, const std::vector<char>& docker_mask) {
   std::size_t parts = 0;
-  const std::vector<std::int32_t> part = label_components(surface, mask_of(band, surface.cell_count()), parts);
+  const std::vector<std::size_t> part = band_parts(surface, band, parts);
   std::vector<char> borders(parts, 0);
-  for (std::uint32_t c : band)
-    for (std::uint32_t n : surface.neighbours(c))
-      if (docker_mask[n]) borders[static_cast<std::size_t>(part[c])] = 1;
+  for (std::size_t i = 0; i < band.size(); ++i)
+    for (std::uint32_t n : surface.neighbours(band[i]))
+      if (docker_mask[n]) borders[part[i]] = 1;
   return std::find(borders.begin(), borders.end(), 0) != borders.end();
 }
 
@@ -132,12 +159,12 @@ double area_of(const VoxelSurface& surface, const Cells& cells) {
 // part of the band along itself (a site made of loops around several stems slides along them).
 std::size_t band_slippage(const VoxelSurface& surface, const Cells& band) {
   std::size_t part_count = 0;
-  const std::vector<std::int32_t> part = label_components(surface, mask_of(band, surface.cell_count()), part_count);
+  const std::vector<std::size_t> part = band_parts(surface, band, part_count);
   std::vector<OrientedPoints> parts(part_count);
-  for (std::uint32_t c : band) {
-    OrientedPoints& points = parts[static_cast<std::size_t>(part[c])];
-    const Vec3 centre = surface.centre(c);
-    for (const CellPlane& plane : surface.planes(c)) {
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    OrientedPoints& points = parts[part[i]];
+    const Vec3 centre = surface.centre(band[i]);
+    for (const CellPlane& plane : surface.planes(band[i])) {
       points.points.push_back(centre - (plane.normal.dot(centre) - plane.offset) * plane.normal);
       points.normals.push_back(plane.normal);
     }

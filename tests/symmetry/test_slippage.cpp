@@ -112,4 +112,8 @@ TEST_CASE("slippage: loops around stems far apart slide only along the stems tog
   patches.push_back(wall);
   CHECK(dg::joint_slippage_dimension(patches) == 1);  // only the slide along both planes (y)
   CHECK(dg::joint_slippage_dimension({}) == 6);
+  // A part locked in place (no slippable motion) locks every other part with it.
+  dg::OrientedPoints box;
+  sample_mesh(dg::test::make_box(Vec3(5, 0, 0), Vec3(6, 1, 1)), box.points, box.normals);
+  CHECK(dg::joint_slippage_dimension({loops.front(), box}) == 0);
 }
