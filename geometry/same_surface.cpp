@@ -2,7 +2,10 @@
 
 #include "geometry/cell_key.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -272,9 +275,15 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
   // Surfaces that pass on cells of tolerance / 2 lie within about 1.7 tolerance of each other,
   // so on cells of 8 tolerance within two of each other's (one for the distance, one for a cell
   // the sampling missed): most differing surfaces fail there first, at 1/256 of the samples.
-  const auto coarse = [&](const CoverTest& test) { return test.holds(8.0 * tolerance, 2); };
-  const auto fine = [&](const CoverTest& test) { return test.holds(0.5 * tolerance, 1); };
-  return std::all_of(tests.begin(), tests.end(), coarse) && std::all_of(tests.begin(), tests.end(), fine);
+  // The sides are independent: tested in parallel, each pass stopping once one side fails.
+  auto all_hold = [&](double cell, std::int64_t rings) {
+    std::atomic<bool> failed{false};
+    tbb::parallel_for(std::size_t(0), tests.size(), [&](std::size_t i) {
+      if (!failed.load(std::memory_order_relaxed) && !tests[i].holds(cell, rings)) failed.store(true, std::memory_order_relaxed);
+    });
+    return !failed.load();
+  };
+  return all_hold(8.0 * tolerance, 2) && all_hold(0.5 * tolerance, 1);
 }
 
 bool same_points(const PointCloud& a, const PointCloud& b, double tolerance) {

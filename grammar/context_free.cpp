@@ -16,9 +16,13 @@
 #include "grammar/site_conflicts.h"
 #include "symmetry/symmetric_region.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <iterator>
 #include <fmt/format.h>
 #include <map>
 #include <numeric>
@@ -414,6 +418,18 @@ class Builder {
 
   void report(double fraction) const { report_progress(progress_, "context-free rules", fraction); }
 
+  // Runs body(i) for every kept node i in parallel (nodes must be independent), reporting the
+  // stage's progress from `from` to `to` as they are done.
+  void for_kept_nodes(double from, double to, const std::function<void(std::size_t)>& body) const {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      if (nodes_[i].kept) kept.push_back(i);
+    const ProgressCallback within = [&](std::string_view stage, double fraction) {
+      return !progress_ || progress_(stage, from + (to - from) * fraction);
+    };
+    parallel_for_reporting(kept.size(), within, "context-free rules", [&](std::size_t k) { body(kept[k]); });
+  }
+
   // How far seam cuts move vertices onto their planes (model units).
   double snap_distance() const { return kCutSnapFraction * surface_.eps(); }
 
@@ -570,8 +586,7 @@ class Builder {
       n.aligned_by = p.aligned_by;
     };
     std::vector<std::vector<Segment>> curves(nodes_.size());
-    for (std::size_t i = 0; i < nodes_.size(); ++i)
-      if (nodes_[i].kept) curves[i] = own_seam_curve(nodes_[i]);
+    for_kept_nodes(0.0, 0.0, [&](std::size_t i) { curves[i] = own_seam_curve(nodes_[i]); });
     std::vector<Placement> before;
     for (std::size_t i = 0; i < nodes_.size(); ++i) before.push_back(placement(i));
     auto screen = [&](const std::vector<char>& only) {
@@ -692,11 +707,8 @@ class Builder {
   void cut_pieces() {
     std::vector<std::vector<std::uint32_t>> pieces_of_original(mesh_.triangles.size());
     for (std::uint32_t t = 0; t < cut_.triangles.size(); ++t) pieces_of_original[origin_[t]].push_back(t);
-    const double total = static_cast<double>(std::max<std::size_t>(1, kept_nodes()));
-    std::size_t done = 0;
-    for (Node& n : nodes_) {
-      if (!n.kept) continue;
-      report(kCutShare + kPiecesShare * static_cast<double>(done++) / total);
+    for_kept_nodes(kCutShare, kCutShare + kPiecesShare, [&](std::size_t i) {
+      Node& n = nodes_[i];
       Cells cells = n.docker;
       cells.insert(cells.end(), n.site.begin(), n.site.end());
       const std::vector<char> touching = triangles_touching(cells);
@@ -705,7 +717,7 @@ class Builder {
           for (std::uint32_t t : pieces_of_original[o])
             if (in_docker(cut_, n, t)) n.piece.push_back(t);
       std::sort(n.piece.begin(), n.piece.end());
-    }
+    });
   }
 
   // The docker piece of every kept node of a point cloud: the points in its docker cells and, in
@@ -865,18 +877,27 @@ class Builder {
            share_a_cell(a.docker, b.site);
   }
 
-  // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`, in
-  // model coordinates, each triangle with its exemplar triangle's material.
-  TriangleMesh remainder(std::size_t node, const std::vector<std::size_t>& children) {
+  // The triangles (points of a cloud) of `node`'s piece (kNone: the whole cut model or cloud)
+  // outside the pieces of `children`, ascending.
+  std::vector<std::uint32_t> remaining(std::size_t node, const std::vector<std::size_t>& children) const {
+    std::vector<std::uint32_t> taken;
+    for (std::size_t c : children) taken.insert(taken.end(), nodes_[c].piece.begin(), nodes_[c].piece.end());
+    std::sort(taken.begin(), taken.end());
     std::vector<std::uint32_t> own;
     if (node == kNone) {
-      own.resize(cut_.triangles.size());
+      own.resize(cloud_ ? cloud_->positions.size() : cut_.triangles.size());
       std::iota(own.begin(), own.end(), 0u);
     } else {
       own = nodes_[node].piece;
     }
-    for (std::size_t c : children)
-      for (std::uint32_t t : nodes_[c].piece) taken_[t] = 1;
+    std::vector<std::uint32_t> rest;
+    std::set_difference(own.begin(), own.end(), taken.begin(), taken.end(), std::back_inserter(rest));
+    return rest;
+  }
+
+  // Terminal geometry of `node` (kNone: the whole model) without the dockers of `children`, in
+  // model coordinates, each triangle with its exemplar triangle's material.
+  TriangleMesh remainder(std::size_t node, const std::vector<std::size_t>& children) const {
     // The remaining triangles, renumbered, re-triangulated with only the vertices that the
     // exemplar's corners and the terminal's own border need; then each flat face as a whole
     // (where a whole face cannot be, it keeps the first pass's triangles).
@@ -884,8 +905,7 @@ class Builder {
     std::vector<std::uint32_t> origin;
     std::vector<char> corners;
     std::unordered_map<std::uint32_t, std::uint32_t> renumbered;
-    for (std::uint32_t t : own) {
-      if (taken_[t]) continue;
+    for (std::uint32_t t : remaining(node, children)) {
       Triangle tri;
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t v = cut_.triangles[t][k];
@@ -900,8 +920,6 @@ class Builder {
       if (cut_.has_materials()) part.materials.push_back(cut_.materials[t]);
       origin.push_back(origin_[t]);
     }
-    for (std::size_t c : children)
-      for (std::uint32_t t : nodes_[c].piece) taken_[t] = 0;
     const TriangleMesh merged =
         merge_fragments(part, origin, std::vector<std::uint32_t>(origin.size(), 0), corners,
                         {.straighten_open_borders = true, .moved_distance = snap_distance()})
@@ -910,32 +928,14 @@ class Builder {
                             {.straighten_open_borders = true, .moved_distance = snap_distance()});
   }
 
-  // Indices of the terminal points of `node` (kNone: the whole cloud) without the dockers of
-  // `children`, ascending.
-  std::vector<std::uint32_t> point_remainder(std::size_t node, const std::vector<std::size_t>& children) {
-    for (std::size_t c : children)
-      for (std::uint32_t p : nodes_[c].piece) taken_[p] = 1;
-    std::vector<std::uint32_t> own;
-    if (node == kNone) {
-      for (std::uint32_t p = 0; p < cloud_->positions.size(); ++p)
-        if (!taken_[p]) own.push_back(p);
-    } else {
-      for (std::uint32_t p : nodes_[node].piece)
-        if (!taken_[p]) own.push_back(p);
-    }
-    for (std::size_t c : children)
-      for (std::uint32_t p : nodes_[c].piece) taken_[p] = 0;
-    return own;
-  }
-
   // The production of `node` (kNone: the axiom) with the given children; children must have
   // their own productions already (their dockers are smaller, so they are built first).
-  ShapeProduction production(std::size_t node, const std::vector<std::size_t>& children) {
+  ShapeProduction production(std::size_t node, const std::vector<std::size_t>& children) const {
     ShapeProduction p;
     const RigidTransform to_frame = node == kNone ? RigidTransform{} : nodes_[node].frame.inverse();
     p.lhs = node == kNone ? kNoProduction : class_index_[nodes_[node].klass];
     if (cloud_) {
-      p.terminal_source_points = point_remainder(node, children);
+      p.terminal_source_points = remaining(node, children);
       p.terminal_points = transformed(subcloud(*cloud_, p.terminal_source_points), to_frame);
     } else {
       p.terminal = transformed(remainder(node, children), to_frame);
@@ -956,7 +956,6 @@ class Builder {
   }
 
   void make_productions(ContextFreeGrammar& grammar, ContextFreeStats& stats) {
-    taken_.assign(cloud_ ? cloud_->positions.size() : cut_.triangles.size(), 0);
     // Non-terminals that survived, indexed densely (named once the unreachable ones are gone).
     class_index_.assign(class_nodes_.size(), kNone);
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
@@ -994,9 +993,14 @@ class Builder {
     for (std::size_t i : order) {
       const UnfoldedChildren candidates = unfolded(kept_only(nodes_[i].children));
       docker_area_[i] = piece_size(nodes_[i].piece);
-      for (const auto& set :
-           random_independent_sets(candidates, options_.independent_set_trials, random)) {
-        ShapeProduction p = production(i, set);
+      // The sets are drawn in order (one random sequence); their productions are built in parallel.
+      const std::vector<std::vector<std::size_t>> sets =
+          random_independent_sets(candidates, options_.independent_set_trials, random);
+      std::vector<ShapeProduction> built(sets.size());
+      tbb::parallel_for(std::size_t(0), sets.size(), [&](std::size_t k) { built[k] = production(i, sets[k]); });
+      for (std::size_t k = 0; k < sets.size(); ++k) {
+        const std::vector<std::size_t>& set = sets[k];
+        ShapeProduction& p = built[k];
         if (!adds_up(p, set, docker_area_[i])) continue;
         if (opens_holes(p)) {
           ++stats.productions_with_holes;
@@ -1109,7 +1113,6 @@ class Builder {
   std::vector<SeamFaceIndex> class_face_index_;       // per class: its seam's voxel faces by plane
   TriangleMesh cut_;                                  // the exemplar cut along every kept seam
   std::vector<std::uint32_t> origin_;                 // per triangle of cut_: its exemplar triangle
-  std::vector<char> taken_;                           // scratch flags per triangle of cut_ (per point of a cloud)
   std::vector<std::size_t> roots_;
   std::vector<std::size_t> class_index_;  // class -> non-terminal index
   std::vector<double> docker_area_;       // per node: piece_size of its docker

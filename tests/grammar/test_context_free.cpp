@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
@@ -802,7 +803,8 @@ TEST_CASE("grid rules, docking sites and context-free rules report their progres
   CHECK_THROWS_AS(dg::find_docking_sites(a.prepared, a.symmetries, {}, cancel), dg::LimitError);
 }
 
-TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse", "[grammar][context_free]") {
+TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions that recurse, the same on one thread",
+          "[grammar][context_free]") {
   {
     const Analysed gear = analyse("gear", {{"teeth", 12}});
     // Every rotation of the group maps the whole gear onto itself: nothing is non-symmetric,
@@ -823,6 +825,25 @@ TEST_CASE("gear: no docker for its full rotation group, pipe tree: productions t
   bool recursive = false;
   for (std::size_t i = 0; i < n; ++i) recursive = recursive || reaches[i][i];
   CHECK(recursive);
+
+  // Pieces are cut and productions built in parallel: one thread gives the same grammar.
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const dg::ContextFreeGrammar serial = dg::build_context_free_grammar(tree.prepared, tree.sites, {});
+  REQUIRE(serial.productions.size() == tree.grammar.productions.size());
+  REQUIRE(serial.nonterminals.size() == n);
+  auto same = [](const dg::ShapeProduction& a, const dg::ShapeProduction& b) {
+    if (a.lhs != b.lhs || a.terminal.positions != b.terminal.positions || a.terminal.triangles != b.terminal.triangles ||
+        a.children.size() != b.children.size())
+      return false;
+    for (std::size_t c = 0; c < a.children.size(); ++c)
+      if (a.children[c].nonterminal != b.children[c].nonterminal ||
+          a.children[c].placement.rotation != b.children[c].placement.rotation ||
+          a.children[c].placement.translation != b.children[c].placement.translation)
+        return false;
+    return true;
+  };
+  CHECK(same(serial.axiom, tree.grammar.axiom));
+  for (std::size_t i = 0; i < serial.productions.size(); ++i) CHECK(same(serial.productions[i], tree.grammar.productions[i]));
 }
 
 // One test case with sections, so the facade is analysed once per process (each case runs in a
