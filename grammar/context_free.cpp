@@ -586,6 +586,7 @@ class Builder {
       n.aligned_by = p.aligned_by;
     };
     std::vector<std::vector<Segment>> curves(nodes_.size());
+    // Progress stays at 0 during the screen (the cut reports from 0 on); a cancel is still heard.
     for_kept_nodes(0.0, 0.0, [&](std::size_t i) { curves[i] = own_seam_curve(nodes_[i]); });
     std::vector<Placement> before;
     for (std::size_t i = 0; i < nodes_.size(); ++i) before.push_back(placement(i));
