@@ -8,14 +8,6 @@
 #include <numeric>
 
 namespace dg {
-namespace {
-
-// Distance from a face's plane, relative to the mesh's bounding-box diagonal, within which a
-// corner counts as lying in it. Text formats keep 6 or 7 significant digits, so the flat faces
-// of real assets are flat only to about 1e-7 of their size; modelled detail is far larger.
-constexpr double kFlatFraction = 1e-6;
-
-}  // namespace
 
 std::vector<std::uint32_t> flat_faces(const TriangleMesh& mesh, const std::vector<char>& kind, double tolerance) {
   const auto count = static_cast<std::uint32_t>(mesh.triangles.size());

@@ -11,6 +11,11 @@
 
 namespace dg {
 
+/// Distance from a face's plane, relative to the mesh's bounding-box diagonal, within which a
+/// corner counts as lying in it. Text formats keep 6 or 7 significant digits, so the flat faces
+/// of real assets are flat only to about 1e-7 of their size; modelled detail is far larger.
+inline constexpr double kFlatFraction = 1e-6;
+
 /// One id per triangle of `mesh` (the index of one triangle of its group): triangles share an id
 /// when edges join them, they face the same side, share their material and their `kind` flag
 /// (one per triangle; empty = all alike), and each one's corners lie within `tolerance` (model

@@ -1,6 +1,7 @@
 #include "geometry/same_surface.h"
 
 #include "geometry/cell_key.h"
+#include "geometry/flat_regions.h"
 
 #include <tbb/parallel_for.h>
 
@@ -11,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -139,9 +141,51 @@ std::map<std::uint32_t, MaterialPart> parts_by_material(const TriangleMesh& mesh
   return parts;
 }
 
+// Pairs triangles of `a` and `b` not yet flagged (in `twin_a`, `twin_b`) that have the same
+// material and whose corners lie within `distance` (model units) of each other's, in any order:
+// corners on either side of a cell boundary. Each such triangle of `a`, in order, takes the first
+// unflagged one of `b` found; both are flagged.
+void pair_close_triangles(const TriangleMesh& a, const TriangleMesh& b, double distance, std::vector<char>& twin_a,
+                          std::vector<char>& twin_b) {
+  auto centroid = [](const TriangleMesh& mesh, std::size_t t) {
+    const auto [p, q, r] = mesh.corners(t);
+    return Vec3((p + q + r) / 3.0);
+  };
+  std::unordered_map<CellKey, std::vector<std::size_t>, CellKeyHash> b_by_centroid;
+  for (std::size_t t = 0; t < b.triangles.size(); ++t)
+    if (!twin_b[t]) b_by_centroid[cell_key(centroid(b, t), distance)].push_back(t);
+  if (b_by_centroid.empty()) return;
+  auto material = [](const TriangleMesh& mesh, std::size_t t) { return mesh.has_materials() ? mesh.materials[t] : 0u; };
+  auto corners_near = [&](const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y) {
+    return std::all_of(x.begin(), x.end(), [&](const Vec3& p) {
+      return std::any_of(y.begin(), y.end(), [&](const Vec3& q) { return (p - q).norm() <= distance; });
+    });
+  };
+  for (std::size_t t = 0; t < a.triangles.size(); ++t) {
+    if (twin_a[t]) continue;
+    const std::array<Vec3, 3> corners = a.corners(t);
+    const CellKey k = cell_key(centroid(a, t), distance);
+    for (std::int64_t dx = -1; dx <= 1 && !twin_a[t]; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && !twin_a[t]; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && !twin_a[t]; ++dz) {
+          const auto found = b_by_centroid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (found == b_by_centroid.end()) continue;
+          for (std::size_t u : found->second) {
+            if (twin_b[u] || material(a, t) != material(b, u)) continue;
+            const std::array<Vec3, 3> other = b.corners(u);
+            if (corners_near(corners, other) && corners_near(other, corners)) {
+              twin_a[t] = twin_b[u] = 1;
+              break;
+            }
+          }
+        }
+  }
+}
+
 // Flags per triangle of `a` and of `b`: 1 when it has a twin in the other mesh, a triangle of the
 // same material whose corners fall in the same cells of edge `cell` (model units; the grid is
-// offset so round coordinates lie inside cells), in any order. Twins are paired one to one.
+// offset so round coordinates lie inside cells), in any order, or lie within `cell` of its
+// corners where they fall in different cells. Twins are paired one to one.
 std::pair<std::vector<char>, std::vector<char>> twin_triangles(const TriangleMesh& a, const TriangleMesh& b, double cell) {
   const Vec3 offset = cell * Vec3(0.381966, 0.267949, 0.414214);
   using Key = std::array<std::int64_t, 10>;  // material, then the sorted corner cells
@@ -172,7 +216,35 @@ std::pair<std::vector<char>, std::vector<char>> twin_triangles(const TriangleMes
       twin_b[(j++)->second] = 1;
     }
   }
+  pair_close_triangles(a, b, cell, twin_a, twin_b);
   return {std::move(twin_a), std::move(twin_b)};
+}
+
+// Flags the triangles of the flat regions of `a` that hold a triangle not yet flagged in
+// `done_a` and are one region with such a region of `b` (same_flat_region within tolerance / 2,
+// so that a production merged with a look-alike still rebuilds its exemplar within tolerance);
+// and the other way round. Cutting pieces apart and merging their flat faces again triangulates
+// one region in different ways.
+void flag_same_flat_regions(const TriangleMesh& a, const TriangleMesh& b, std::vector<char>& done_a, std::vector<char>& done_b,
+                            double tolerance) {
+  auto not_done = [](const std::vector<char>& done) {
+    std::vector<char> wanted(done.size());
+    std::transform(done.begin(), done.end(), wanted.begin(), [](char d) { return static_cast<char>(d == 0); });
+    return wanted;
+  };
+  const std::vector<FlatRegion> regions_a = flat_regions(a, not_done(done_a));
+  if (regions_a.empty()) return;
+  const std::vector<FlatRegion> regions_b = flat_regions(b, not_done(done_b));
+  std::vector<char> matched_a(regions_a.size(), 0), matched_b(regions_b.size(), 0);
+  for (std::size_t i = 0; i < regions_a.size(); ++i)
+    for (std::size_t j = 0; j < regions_b.size(); ++j)
+      if (same_flat_region(regions_a[i], regions_b[j], 0.5 * tolerance)) matched_a[i] = matched_b[j] = 1;
+  for (std::size_t i = 0; i < regions_a.size(); ++i)
+    if (matched_a[i])
+      for (std::uint32_t t : regions_a[i].triangles) done_a[t] = 1;
+  for (std::size_t j = 0; j < regions_b.size(); ++j)
+    if (matched_b[j])
+      for (std::uint32_t t : regions_b[j].triangles) done_b[t] = 1;
 }
 
 // Pairs of triangles up to which `near_triangles` tests each triangle of `to` against each of
@@ -247,43 +319,48 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
     });
   };
   if (!matched(parts_a, parts_b) || !matched(parts_b, parts_a)) return false;
-  // Twins (corners in one cell of edge tolerance / 8, within 0.22 tolerance) cover each other:
-  // only the other triangles are sampled, against the other mesh's triangles near them. Exact
-  // copies cut alike have no others.
-  const auto [twin_a, twin_b] = twin_triangles(a, b, tolerance / 8.0);
-  auto without_twins = [](std::vector<std::size_t> triangles, const std::vector<char>& twin) {
-    std::erase_if(triangles, [&](std::size_t t) { return twin[t] != 0; });
-    return triangles;
-  };
-  // Cells of one surface touch the other's only through triangles whose boxes come within 2
-  // tolerance of theirs.
-  std::vector<CoverTest> tests;
-  for (const auto& [material, part_a] : parts_a) {
-    const auto found = parts_b.find(material);
-    if (found == parts_b.end()) continue;
-    const std::vector<std::size_t>& triangles_b = found->second.triangles;
-    for (auto [from, from_all, twin, to, to_all] : {std::tuple{&a, &part_a.triangles, &twin_a, &b, &triangles_b},
-                                                     std::tuple{&b, &triangles_b, &twin_b, &a, &part_a.triangles}}) {
-      std::vector<std::size_t> rest = without_twins(*from_all, *twin);
-      if (rest.empty()) continue;
-      double area = 0.0;
-      for (std::size_t t : rest) area += 0.5 * from->area_vector(t).norm();
-      std::vector<std::size_t> near = near_triangles(*from, rest, *to, *to_all, 2.0 * tolerance);
-      tests.push_back(CoverTest{from, std::move(rest), area, to, std::move(near)});
+  // Twins (corners within tolerance / 8, or in one cell of that edge) cover each other: only the
+  // other triangles are sampled, against the other mesh's triangles near them (cells of one
+  // surface touch the other's only through triangles whose boxes come within 2 tolerance of
+  // theirs). Exact copies cut alike have no others.
+  auto [twin_a, twin_b] = twin_triangles(a, b, tolerance / 8.0);
+  auto cover_tests = [&] {
+    auto without_twins = [](std::vector<std::size_t> triangles, const std::vector<char>& twin) {
+      std::erase_if(triangles, [&](std::size_t t) { return twin[t] != 0; });
+      return triangles;
+    };
+    std::vector<CoverTest> tests;
+    for (const auto& [material, part_a] : parts_a) {
+      const auto found = parts_b.find(material);
+      if (found == parts_b.end()) continue;
+      const std::vector<std::size_t>& triangles_b = found->second.triangles;
+      for (auto [from, from_all, twin, to, to_all] : {std::tuple{&a, &part_a.triangles, &twin_a, &b, &triangles_b},
+                                                       std::tuple{&b, &triangles_b, &twin_b, &a, &part_a.triangles}}) {
+        std::vector<std::size_t> rest = without_twins(*from_all, *twin);
+        if (rest.empty()) continue;
+        double area = 0.0;
+        for (std::size_t t : rest) area += 0.5 * from->area_vector(t).norm();
+        std::vector<std::size_t> near = near_triangles(*from, rest, *to, *to_all, 2.0 * tolerance);
+        tests.push_back(CoverTest{from, std::move(rest), area, to, std::move(near)});
+      }
     }
-  }
-  // Surfaces that pass on cells of tolerance / 2 lie within about 1.7 tolerance of each other,
-  // so on cells of 8 tolerance within two of each other's (one for the distance, one for a cell
-  // the sampling missed): most differing surfaces fail there first, at 1/256 of the samples.
+    return tests;
+  };
   // The sides are independent: tested in parallel, each pass stopping once one side fails.
-  auto all_hold = [&](double cell, std::int64_t rings) {
+  auto all_hold = [](const std::vector<CoverTest>& tests, double cell, std::int64_t rings) {
     std::atomic<bool> failed{false};
     tbb::parallel_for(std::size_t(0), tests.size(), [&](std::size_t i) {
       if (!failed.load(std::memory_order_relaxed) && !tests[i].holds(cell, rings)) failed.store(true, std::memory_order_relaxed);
     });
     return !failed.load();
   };
-  return all_hold(8.0 * tolerance, 2) && all_hold(0.5 * tolerance, 1);
+  // Surfaces that pass on cells of tolerance / 2 lie within about 1.7 tolerance of each other,
+  // so on cells of 8 tolerance within two of each other's (one for the distance, one for a cell
+  // the sampling missed): most differing surfaces fail there first, at 1/256 of the samples.
+  if (!all_hold(cover_tests(), 8.0 * tolerance, 2)) return false;
+  // Flat regions with the same plane and outline cover each other too, however triangulated.
+  flag_same_flat_regions(a, b, twin_a, twin_b, tolerance);
+  return all_hold(cover_tests(), 0.5 * tolerance, 1);
 }
 
 bool same_points(const PointCloud& a, const PointCloud& b, double tolerance) {

@@ -12,8 +12,11 @@ namespace dg {
 /// of each other). A material of no more than tolerance^2 of area may be missing from one of
 /// them. Area is not compared: a mesh holding a hidden second layer of faces (duplicated
 /// triangles, as real assets have) is the same surface. Triangles with a twin in the other mesh
-/// (corners within tolerance / 8) need no cells; the rest is sampled, on cells grown to keep to
-/// about a million where its area needs more (the test then allows proportionally more).
+/// (corners within tolerance / 8) need no cells, nor do flat regions (coplanar flat faces, see
+/// flat_regions) that have one in the other mesh with the same plane, outline and area within
+/// tolerance / 2 (see same_flat_region), however each is triangulated; the rest is sampled, on
+/// cells grown to keep to about a million where its area needs more (the test then allows
+/// proportionally more).
 bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance);
 
 /// True when `a` and `b` have bounding boxes within 2 `tolerance` (model units) and their points

@@ -1,0 +1,217 @@
+#include "geometry/flat_regions.h"
+
+#include "geometry/cell_key.h"
+#include "geometry/flat_faces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+
+namespace dg {
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+using Edge = std::pair<std::uint32_t, std::uint32_t>;  // vertex indices, lower first
+
+// A flat face being gathered: its triangles, summed area vector and outline edges.
+struct Face {
+  std::vector<std::uint32_t> triangles;
+  Vec3 area_vector = Vec3::Zero();
+  std::vector<Edge> outline;
+};
+
+// Edges that an odd number of the listed triangles use.
+std::vector<Edge> odd_edges(const TriangleMesh& mesh, const std::vector<std::uint32_t>& triangles) {
+  std::map<Edge, int> uses;
+  for (std::uint32_t t : triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])];
+  std::vector<Edge> odd;
+  for (const auto& [edge, count] : uses)
+    if (count % 2 == 1) odd.push_back(edge);
+  return odd;
+}
+
+// Whether every end of `edges` lies within `tolerance` of the plane through `origin` with unit
+// normal `normal`.
+bool on_plane(const TriangleMesh& mesh, const std::vector<Edge>& edges, const Vec3& origin, const Vec3& normal, double tolerance) {
+  return std::all_of(edges.begin(), edges.end(), [&](const Edge& e) {
+    return std::abs(normal.dot(mesh.positions[e.first] - origin)) <= tolerance &&
+           std::abs(normal.dot(mesh.positions[e.second] - origin)) <= tolerance;
+  });
+}
+
+// `edges` split at every one of their ends that lies within `tolerance` of another edge, strictly
+// between its ends (a T-junction), without the parts used an even number of times.
+std::vector<Edge> union_outline(const TriangleMesh& mesh, const std::vector<Edge>& edges, double tolerance) {
+  // The ends by x, so each edge examines only those within its x range.
+  std::vector<std::uint32_t> ends;
+  for (const Edge& e : edges) ends.push_back(e.first), ends.push_back(e.second);
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<std::pair<double, std::uint32_t>> by_x;
+  for (std::uint32_t v : ends) by_x.emplace_back(mesh.positions[v].x(), v);
+  std::sort(by_x.begin(), by_x.end());
+  std::map<Edge, int> uses;
+  for (const Edge& e : edges) {
+    const Vec3 from = mesh.positions[e.first], along = mesh.positions[e.second] - from;
+    const double length2 = along.squaredNorm();
+    std::vector<std::pair<double, std::uint32_t>> inner;
+    const double low = std::min(from.x(), from.x() + along.x()) - tolerance;
+    const double high = std::max(from.x(), from.x() + along.x()) + tolerance;
+    if (length2 > 0.0)
+      for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{low, std::uint32_t{0}});
+           it != by_x.end() && it->first <= high; ++it) {
+        const std::uint32_t v = it->second;
+        if (v == e.first || v == e.second) continue;
+        const Vec3 offset = mesh.positions[v] - from;
+        const double s = offset.dot(along) / length2;
+        if (s > 0.0 && s < 1.0 && (offset - s * along).norm() <= tolerance) inner.emplace_back(s, v);
+      }
+    std::sort(inner.begin(), inner.end());
+    std::uint32_t previous = e.first;
+    for (const auto& [s, v] : inner) ++uses[std::minmax(previous, v)], previous = v;
+    ++uses[std::minmax(previous, e.second)];
+  }
+  std::vector<Edge> outline;
+  for (const auto& [edge, count] : uses)
+    if (count % 2 == 1) outline.push_back(edge);
+  return outline;
+}
+
+using Segment = std::array<Vec3, 2>;
+
+// Points of `segment` every `spacing` (model units) at most, both ends included.
+std::vector<Vec3> points_along(const Segment& segment, double spacing) {
+  const Vec3 along = segment[1] - segment[0];
+  const int steps = std::max(1, static_cast<int>(std::ceil(along.norm() / spacing)));
+  std::vector<Vec3> points;
+  for (int i = 0; i <= steps; ++i) points.push_back(segment[0] + (static_cast<double>(i) / steps) * along);
+  return points;
+}
+
+// Whether every point of `from` (sampled every distance / 4) lies within `distance` (model units)
+// of a segment of `to`. The segments of `to` are hashed on cells of 1.5 distance around their
+// points every distance / 2, so a point within `distance` of one finds it in its own cell.
+bool outline_within(const std::vector<Segment>& from, const std::vector<Segment>& to, double distance) {
+  const double cell = 1.5 * distance;
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid;
+  for (std::uint32_t i = 0; i < to.size(); ++i)
+    for (const Vec3& p : points_along(to[i], 0.5 * distance)) {
+      const CellKey k = cell_key(p, cell);
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            std::vector<std::uint32_t>& listed = grid[{k[0] + dx, k[1] + dy, k[2] + dz}];
+            if (listed.empty() || listed.back() != i) listed.push_back(i);
+          }
+    }
+  auto near = [&](const Vec3& p) {
+    const auto found = grid.find(cell_key(p, cell));
+    if (found == grid.end()) return false;
+    return std::any_of(found->second.begin(), found->second.end(), [&](std::uint32_t i) {
+      const Vec3 along = to[i][1] - to[i][0];
+      const double length2 = along.squaredNorm();
+      const double s = length2 > 0.0 ? std::clamp((p - to[i][0]).dot(along) / length2, 0.0, 1.0) : 0.0;
+      return (to[i][0] + s * along - p).norm() <= distance;
+    });
+  };
+  return std::all_of(from.begin(), from.end(), [&](const Segment& segment) {
+    const std::vector<Vec3> points = points_along(segment, 0.25 * distance);
+    return std::all_of(points.begin(), points.end(), near);
+  });
+}
+
+// Total length of `outline` (model units).
+double outline_length(const std::vector<Segment>& outline) {
+  double total = 0.0;
+  for (const auto& [from, to] : outline) total += (to - from).norm();
+  return total;
+}
+
+}  // namespace
+
+std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector<char>& wanted) {
+  if (mesh.triangles.empty()) return {};
+  const double tolerance = kFlatFraction * mesh.bounds().diagonal();
+  const std::vector<std::uint32_t> face_of = flat_faces(mesh, {}, tolerance);
+  std::vector<std::uint32_t> slot(mesh.triangles.size(), kNone);  // per face id (a triangle index)
+  std::vector<Face> faces;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    if (wanted[t] && slot[face_of[t]] == kNone) slot[face_of[t]] = static_cast<std::uint32_t>(faces.size()), faces.emplace_back();
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    if (slot[face_of[t]] != kNone) {
+      Face& f = faces[slot[face_of[t]]];
+      f.triangles.push_back(t);
+      f.area_vector += mesh.area_vector(t);
+    }
+  for (Face& f : faces) f.outline = odd_edges(mesh, f.triangles);
+  auto material = [&](const Face& f) { return mesh.has_materials() ? mesh.materials[f.triangles.front()] : 0u; };
+  // Faces of one material, facing the same side, each one's outline on the other's plane.
+  std::vector<std::uint32_t> region(faces.size());
+  std::iota(region.begin(), region.end(), 0u);
+  auto root = [&](std::uint32_t x) {
+    while (region[x] != x) x = region[x] = region[region[x]];
+    return x;
+  };
+  auto coplanar = [&](const Face& f, const Face& g) {
+    const Vec3 normal = f.area_vector.normalized();
+    return !f.outline.empty() && on_plane(mesh, g.outline, mesh.positions[f.outline.front().first], normal, tolerance);
+  };
+  for (std::uint32_t i = 0; i < faces.size(); ++i)
+    for (std::uint32_t j = i + 1; j < faces.size(); ++j)
+      if (root(i) != root(j) && material(faces[i]) == material(faces[j]) && faces[i].area_vector.dot(faces[j].area_vector) > 0.0 &&
+          coplanar(faces[i], faces[j]) && coplanar(faces[j], faces[i]))
+        region[root(j)] = root(i);
+  std::vector<FlatRegion> regions;
+  std::vector<std::uint32_t> region_slot(faces.size(), kNone);
+  std::vector<std::vector<Edge>> edges;
+  std::vector<Vec3> area_vectors;
+  for (std::uint32_t i = 0; i < faces.size(); ++i) {
+    const std::uint32_t r = root(i);
+    if (region_slot[r] == kNone) {
+      region_slot[r] = static_cast<std::uint32_t>(regions.size());
+      regions.emplace_back();
+      regions.back().material = material(faces[i]);
+      edges.emplace_back();
+      area_vectors.push_back(Vec3::Zero());
+    }
+    const std::uint32_t k = region_slot[r];
+    FlatRegion& out = regions[k];
+    out.triangles.insert(out.triangles.end(), faces[i].triangles.begin(), faces[i].triangles.end());
+    edges[k].insert(edges[k].end(), faces[i].outline.begin(), faces[i].outline.end());
+    area_vectors[k] += faces[i].area_vector;
+  }
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    FlatRegion& out = regions[k];
+    std::sort(out.triangles.begin(), out.triangles.end());
+    out.normal = area_vectors[k].normalized();
+    for (std::uint32_t t : out.triangles) {
+      out.area += 0.5 * mesh.area_vector(t).norm();
+      for (std::uint32_t v : mesh.triangles[t]) out.bounds.add(mesh.positions[v]);
+    }
+    for (const Edge& e : union_outline(mesh, edges[k], tolerance))
+      out.outline.push_back({mesh.positions[e.first], mesh.positions[e.second]});
+  }
+  return regions;
+}
+
+bool same_flat_region(const FlatRegion& x, const FlatRegion& y, double distance) {
+  if (x.material != y.material || !(x.normal.dot(y.normal) > 0.0) || x.outline.empty() || y.outline.empty() ||
+      (x.bounds.min - y.bounds.min).norm() > distance || (x.bounds.max - y.bounds.max).norm() > distance)
+    return false;
+  if (std::abs(x.area - y.area) > distance * std::max(outline_length(x.outline), outline_length(y.outline))) return false;
+  auto on_plane_of = [&](const FlatRegion& f, const FlatRegion& plane) {
+    const Vec3& origin = plane.outline.front()[0];
+    return std::all_of(f.outline.begin(), f.outline.end(), [&](const Segment& s) {
+      return std::abs(plane.normal.dot(s[0] - origin)) <= distance && std::abs(plane.normal.dot(s[1] - origin)) <= distance;
+    });
+  };
+  return on_plane_of(x, y) && on_plane_of(y, x) && outline_within(x.outline, y.outline, distance) &&
+         outline_within(y.outline, x.outline, distance);
+}
+
+}  // namespace dg
