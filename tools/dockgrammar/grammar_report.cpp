@@ -369,6 +369,32 @@ CellTolerances match_tolerances(const AnalysisReport& report) {
 }
 
 // The suggestion to widen --tolerance, when analyze made one; empty otherwise.
+// When no grid was found: the repeating translation with the most r-symmetric area (the one a
+// reader most likely expected a grid from) and why it gave none, or "" when there is none or it
+// is named elsewhere (by the tolerance hint, or as a repeat the grids leave unused under "Not
+// yet built", which takes families of at least GridOptions::min_repeats repeats).
+std::string strongest_translation_text(const AnalysisReport& report) {
+  if (!report.grammar.grids.empty()) return "";
+  const SymmetryResult& result = report.symmetries;
+  const DetectedSymmetry* strongest = nullptr;
+  std::size_t index = 0;
+  for (std::size_t i = 0; i < result.symmetries.size(); ++i) {
+    const DetectedSymmetry& s = result.symmetries[i];
+    if (s.kind != "translation" || result.families[s.family].count == 0) continue;  // slides are no repeat
+    if (!strongest || s.r_symmetric_area > strongest->r_symmetric_area) strongest = &s, index = i;
+  }
+  if (!strongest || (report.tolerance_hint && report.tolerance_hint->family == strongest->family) ||
+      static_cast<int>(result.families[strongest->family].count) >= GridOptions{}.min_repeats)
+    return "";
+  const Vec3& t = strongest->transform.translation;
+  return fmt::format(
+      "The repeating translation with the most r-symmetric area is #{} (F{}, t = {}, |t| = {:.6g}; {:.1f} % of the "
+      "surface). No two of its units could be cut apart by planes across the model that cross only surface it maps onto "
+      "copies: surface that does not repeat with them lies between or around its copies (`dockgrammar symmetry MODEL -o "
+      "DIR` draws where it repeats). Its copies may still be docking sites of the context-free rules below.\n\n",
+      index + 1, strongest->family + 1, vec(t), t.norm(), 100.0 * strongest->r_symmetric_fraction);
+}
+
 std::string tolerance_hint_text(const AnalysisReport& report, std::string_view quote = "") {
   if (!report.tolerance_hint) return "";
   const ToleranceHint& hint = *report.tolerance_hint;
@@ -514,6 +540,7 @@ void write_analysis_report(const AnalysisReport& report) {
   if (report.grammar.grids.empty())
     md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
           "area).\n\n";
+  md += strongest_translation_text(report);
   if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   if (const std::string hint = material_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   for (const GridWithPieces& grid : report.grammar.grids) {

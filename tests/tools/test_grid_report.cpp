@@ -1,0 +1,36 @@
+// analyze's report when no grid is found: it names the repeating translation a reader most
+// likely expected one from, and why its units could not be cut apart.
+
+#include "geometry/model_io.h"
+#include "support/cli_run.h"
+#include "support/shapes.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+TEST_CASE("analyze: with no grid, the report names the strongest repeating translation and why it gave none",
+          "[tools][grids]") {
+  // Two equal boxes, 2 apart, above a sphere: the translation maps one box onto the other, but
+  // every plane between them crosses the sphere, which does not repeat.
+  dg::TriangleMesh mesh = dg::test::make_sphere(dg::Vec3(0.0, 0.0, -2.0), 2.5, 24, 48);
+  dg::test::append(mesh, dg::test::make_box(dg::Vec3(-1.5, -0.5, 1.0), dg::Vec3(-0.5, 0.5, 2.0)));
+  dg::test::append(mesh, dg::test::make_box(dg::Vec3(0.5, -0.5, 1.0), dg::Vec3(1.5, 0.5, 2.0)));
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report");
+  dg::write_mesh(folder / "boxes.obj", mesh);
+  const dg::test::CliRun run = dg::test::run_cli("analyze " + (folder / "boxes.obj").string() + " -q -o " + folder.string(), folder);
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  std::ifstream in(folder / "boxes.report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(report);
+  CHECK(report.find("No grid found") != std::string::npos);
+  const std::size_t named = report.find("The repeating translation with the most r-symmetric area is");
+  REQUIRE(named != std::string::npos);
+  const std::string sentence = report.substr(named, report.find('\n', named) - named);
+  CHECK(sentence.find("|t| = 2;") != std::string::npos);
+  CHECK(sentence.find("does not repeat with them") != std::string::npos);
+}
