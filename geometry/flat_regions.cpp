@@ -2,6 +2,8 @@
 
 #include "geometry/cell_key.h"
 #include "geometry/flat_faces.h"
+#include "geometry/segment_index.h"
+#include "geometry/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +84,6 @@ std::vector<Edge> union_outline(const TriangleMesh& mesh, const std::vector<Edge
   return outline;
 }
 
-using Segment = std::array<Vec3, 2>;
-
 // Points of `segment` every `spacing` (model units) at most, both ends included.
 std::vector<Vec3> points_along(const Segment& segment, double spacing) {
   const Vec3 along = segment[1] - segment[0];
@@ -95,7 +95,8 @@ std::vector<Vec3> points_along(const Segment& segment, double spacing) {
 
 // Whether every point of `from` (sampled every distance / 4) lies within `distance` (model units)
 // of a segment of `to`. The segments of `to` are hashed on cells of 1.5 distance around their
-// points every distance / 2, so a point within `distance` of one finds it in its own cell.
+// points every distance / 2, so a point within `distance` of one finds it in its own cell
+// (SegmentIndex hashes every cell of a segment's box: too many for long oblique outline edges).
 bool outline_within(const std::vector<Segment>& from, const std::vector<Segment>& to, double distance) {
   const double cell = 1.5 * distance;
   std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid;
@@ -112,24 +113,13 @@ bool outline_within(const std::vector<Segment>& from, const std::vector<Segment>
   auto near = [&](const Vec3& p) {
     const auto found = grid.find(cell_key(p, cell));
     if (found == grid.end()) return false;
-    return std::any_of(found->second.begin(), found->second.end(), [&](std::uint32_t i) {
-      const Vec3 along = to[i][1] - to[i][0];
-      const double length2 = along.squaredNorm();
-      const double s = length2 > 0.0 ? std::clamp((p - to[i][0]).dot(along) / length2, 0.0, 1.0) : 0.0;
-      return (to[i][0] + s * along - p).norm() <= distance;
-    });
+    return std::any_of(found->second.begin(), found->second.end(),
+                       [&](std::uint32_t i) { return (closest_point_on_segment(p, to[i]) - p).norm() <= distance; });
   };
   return std::all_of(from.begin(), from.end(), [&](const Segment& segment) {
     const std::vector<Vec3> points = points_along(segment, 0.25 * distance);
     return std::all_of(points.begin(), points.end(), near);
   });
-}
-
-// Total length of `outline` (model units).
-double outline_length(const std::vector<Segment>& outline) {
-  double total = 0.0;
-  for (const auto& [from, to] : outline) total += (to - from).norm();
-  return total;
 }
 
 }  // namespace
@@ -153,25 +143,21 @@ std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector
   // Faces of one material, facing the same side, each one's outline on the other's plane.
   std::vector<std::uint32_t> region(faces.size());
   std::iota(region.begin(), region.end(), 0u);
-  auto root = [&](std::uint32_t x) {
-    while (region[x] != x) x = region[x] = region[region[x]];
-    return x;
-  };
   auto coplanar = [&](const Face& f, const Face& g) {
     const Vec3 normal = f.area_vector.normalized();
     return !f.outline.empty() && on_plane(mesh, g.outline, mesh.positions[f.outline.front().first], normal, tolerance);
   };
   for (std::uint32_t i = 0; i < faces.size(); ++i)
     for (std::uint32_t j = i + 1; j < faces.size(); ++j)
-      if (root(i) != root(j) && material(faces[i]) == material(faces[j]) && faces[i].area_vector.dot(faces[j].area_vector) > 0.0 &&
-          coplanar(faces[i], faces[j]) && coplanar(faces[j], faces[i]))
-        region[root(j)] = root(i);
+      if (find_root(region, i) != find_root(region, j) && material(faces[i]) == material(faces[j]) &&
+          faces[i].area_vector.dot(faces[j].area_vector) > 0.0 && coplanar(faces[i], faces[j]) && coplanar(faces[j], faces[i]))
+        region[find_root(region, j)] = find_root(region, i);
   std::vector<FlatRegion> regions;
   std::vector<std::uint32_t> region_slot(faces.size(), kNone);
   std::vector<std::vector<Edge>> edges;
   std::vector<Vec3> area_vectors;
   for (std::uint32_t i = 0; i < faces.size(); ++i) {
-    const std::uint32_t r = root(i);
+    const std::uint32_t r = find_root(region, i);
     if (region_slot[r] == kNone) {
       region_slot[r] = static_cast<std::uint32_t>(regions.size());
       regions.emplace_back();
@@ -203,7 +189,7 @@ bool same_flat_region(const FlatRegion& x, const FlatRegion& y, double distance)
   if (x.material != y.material || !(x.normal.dot(y.normal) > 0.0) || x.outline.empty() || y.outline.empty() ||
       (x.bounds.min - y.bounds.min).norm() > distance || (x.bounds.max - y.bounds.max).norm() > distance)
     return false;
-  if (std::abs(x.area - y.area) > distance * std::max(outline_length(x.outline), outline_length(y.outline))) return false;
+  if (std::abs(x.area - y.area) > distance * std::max(curve_length(x.outline), curve_length(y.outline))) return false;
   auto on_plane_of = [&](const FlatRegion& f, const FlatRegion& plane) {
     const Vec3& origin = plane.outline.front()[0];
     return std::all_of(f.outline.begin(), f.outline.end(), [&](const Segment& s) {

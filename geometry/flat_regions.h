@@ -5,8 +5,8 @@
 // different ways from copy to copy; the region and its outline stay the same.
 
 #include "geometry/mesh.h"
+#include "geometry/segment_index.h"
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,7 +22,7 @@ struct FlatRegion {
   /// The faces' outline edges, split where another outline vertex lies on them, without the
   /// parts that an even number of the faces use (where two faces meet, also at a T-junction):
   /// each as its two end points.
-  std::vector<std::array<Vec3, 2>> outline;
+  std::vector<Segment> outline;
 };
 
 /// The flat regions of `mesh` made of the flat faces that hold a triangle flagged in `wanted` (one

@@ -359,6 +359,9 @@ bool same_surface(const TriangleMesh& a, const TriangleMesh& b, double tolerance
   // the sampling missed): most differing surfaces fail there first, at 1/256 of the samples.
   if (!all_hold(cover_tests(), 8.0 * tolerance, 2)) return false;
   // Flat regions with the same plane and outline cover each other too, however triangulated.
+  // The tests are built again without them, so that the other mesh's triangles kept near the
+  // rest shrink too (kept from the coarse pass, the fine pass would still sample the partners of
+  // the regions set aside).
   flag_same_flat_regions(a, b, twin_a, twin_b, tolerance);
   return all_hold(cover_tests(), 0.5 * tolerance, 1);
 }

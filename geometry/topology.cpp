@@ -3,6 +3,8 @@
 
 #include "geometry/topology.h"
 
+#include "geometry/union_find.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -17,15 +19,6 @@ std::size_t vertex_slots(const TriangleMesh& mesh) {
     for (std::uint32_t index : t) slots = std::max<std::size_t>(slots, std::size_t{index} + 1);
   }
   return slots;
-}
-
-/// Root of `v` with path halving.
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "grammar/material_hint.h"
 
 #include "geometry/closest_point.h"
+#include "geometry/union_find.h"
 
 #include <cmath>
 #include <numbers>
@@ -33,12 +34,6 @@ long material_at(const PreparedModel& prepared, const Vec3& q, const Vec3& norma
     if ((closest_point_on_triangle(q, a, b, c) - q).norm() <= tolerance) return mesh.materials[t];
   }
   return -1;
-}
-
-// Union-find root with path halving.
-std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
 }
 
 bool usable_name(const std::string& name) { return name.find_first_of(",*'\"") == std::string::npos; }
@@ -91,11 +86,11 @@ std::vector<std::vector<std::uint32_t>> interchangeable_materials(const std::vec
   for (std::uint32_t a = 0; a < n; ++a)
     for (std::uint32_t b = a + 1; b < n; ++b)
       if (!own_class(a) && !own_class(b) && std::max(share(a, b), share(b, a)) >= kSwapShare)
-        parent[root(parent, b)] = root(parent, a);
+        parent[find_root(parent, b)] = find_root(parent, a);
   std::vector<std::vector<std::uint32_t>> groups;
   std::vector<long> group_of(n, -1);
   for (std::uint32_t a = 0; a < n; ++a) {
-    const std::uint32_t r = root(parent, a);
+    const std::uint32_t r = find_root(parent, a);
     if (group_of[r] < 0) {
       group_of[r] = static_cast<long>(groups.size());
       groups.emplace_back();

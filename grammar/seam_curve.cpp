@@ -1,59 +1,12 @@
 #include "grammar/seam_curve.h"
 
-#include "geometry/cell_key.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <unordered_map>
 
 namespace dg {
 namespace {
-
-Vec3 closest_on_segment(const Vec3& p, const Segment& s) {
-  const Vec3 d = s[1] - s[0];
-  const double length2 = d.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - s[0]).dot(d) / length2, 0.0, 1.0) : 0.0;
-  return s[0] + t * d;
-}
-
-// The segments of a curve hashed by the cells (edge `cell`) that lie within `reach` of them.
-class SegmentIndex {
- public:
-  SegmentIndex(const std::vector<Segment>& segments, double reach, double cell) : segments_(segments), cell_(cell) {
-    for (std::uint32_t i = 0; i < segments.size(); ++i) {
-      const CellKey lo = key(segments[i][0].cwiseMin(segments[i][1]) - Vec3::Constant(reach));
-      const CellKey hi = key(segments[i][0].cwiseMax(segments[i][1]) + Vec3::Constant(reach));
-      for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-        for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) grid_[{x, y, z}].push_back(i);
-    }
-  }
-  SegmentIndex(std::vector<Segment>&&, double, double) = delete;  // keeps a reference to the segments
-
-  // The point of the curve nearest to p among the segments hashed at p's cell (nothing when
-  // none is: then none lies within `reach`).
-  std::optional<Vec3> nearest(const Vec3& p) const {
-    const auto found = grid_.find(key(p));
-    if (found == grid_.end()) return std::nullopt;
-    std::optional<Vec3> best;
-    double best_distance = std::numeric_limits<double>::infinity();
-    for (std::uint32_t i : found->second) {
-      const Vec3 q = closest_on_segment(p, segments_[i]);
-      const double distance = (q - p).norm();
-      if (distance < best_distance) best_distance = distance, best = q;
-    }
-    return best;
-  }
-
- private:
-  CellKey key(const Vec3& p) const { return cell_key(p, cell_); }
-
-  const std::vector<Segment>& segments_;
-  double cell_;
-  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid_;
-};
 
 // Where the misfit and the alignment look at a curve: its segments' ends and midpoints.
 std::vector<Vec3> samples(const std::vector<Segment>& curve) {
@@ -112,12 +65,6 @@ std::vector<Segment> seam_segments(const TriangleMesh& mesh, const EdgeUsers& us
       segments.push_back({mesh.positions[mesh.triangles[t][k]], mesh.positions[mesh.triangles[t][(k + 1) % 3]]});
     }
   return segments;
-}
-
-double curve_length(const std::vector<Segment>& curve) {
-  double length = 0.0;
-  for (const Segment& s : curve) length += (s[1] - s[0]).norm();
-  return length;
 }
 
 double seam_misfit(const std::vector<Segment>& a, const std::vector<Segment>& b, double limit, double cell) {

@@ -4,6 +4,7 @@
 
 #include "geometry/mesh.h"
 #include "geometry/rigid_transform.h"
+#include "geometry/segment_index.h"
 #include "geometry/topology.h"
 
 #include <array>
@@ -13,8 +14,6 @@
 #include <vector>
 
 namespace dg {
-
-using Segment = std::array<Vec3, 2>;
 
 /// How far apart (fraction of the voxel size eps) two seam curves may lie and still fit. Exact
 /// repeats agree up to the float32 rounding of the source coordinates (the Kenney
@@ -55,9 +54,6 @@ inline constexpr double kSeamAlignReachFraction = 0.5;
 /// rigid motion keeps lengths, and copies cut a little off their place differ by far less (the
 /// table football's rod ends: not at all); curves of other lengths are other seams, not tried.
 inline constexpr double kSeamAlignLengthFraction = 0.02;
-
-/// Total length of a curve's segments (model units).
-double curve_length(const std::vector<Segment>& curve);
 
 /// Largest rotation (radians, 1 degree: the symmetry stage's default angle tolerance) by which
 /// aligning a seam curve may turn a location's frame.
