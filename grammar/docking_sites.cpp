@@ -340,13 +340,16 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
     if (s.family < smallest_power.size()) smallest_power[s.family] = std::min(smallest_power[s.family], std::abs(s.power));
   std::vector<std::size_t> chosen;
   std::vector<char> family_taken(symmetries.families.size(), 0);
-  for (std::size_t i = 0; i < symmetries.symmetries.size() && chosen.size() < options.max_symmetries; ++i) {
+  for (std::size_t i = 0; i < symmetries.symmetries.size(); ++i) {
     const DetectedSymmetry& s = symmetries.symmetries[i];
     if (s.family < family_taken.size()) {
       if (family_taken[s.family] || std::abs(s.power) != smallest_power[s.family]) continue;
       family_taken[s.family] = 1;
     }
-    chosen.push_back(i);
+    if (chosen.size() < options.max_symmetries)
+      chosen.push_back(i);
+    else
+      ++result.stats.symmetries_skipped;
   }
   // Each motion (symmetry and direction) is independent: computed in parallel, joined in order.
   std::vector<DockingSiteResult> per_motion(2 * chosen.size());

@@ -65,6 +65,9 @@ struct DockingSite {
 
 struct DockingSiteStats {
   std::size_t motions = 0;             ///< motions examined (each symmetry in both directions)
+  /// Symmetries that could give docking sites (one per repetition family) beyond
+  /// DockingSiteOptions::max_symmetries, not examined.
+  std::size_t symmetries_skipped = 0;
   std::size_t regions = 0;             ///< non-symmetric regions seen over all motions
   std::size_t invalid = 0;             ///< regions whose site image never split the model
 };

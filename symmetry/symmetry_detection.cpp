@@ -66,7 +66,10 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
                                            : "no candidates: no two feature-line ends match under a rigid motion");
     return result;
   }
-  if (candidates.size() > options.max_verified) candidates.resize(options.max_verified);
+  if (candidates.size() > options.max_verified) {
+    result.stats.unverified = candidates.size() - options.max_verified;
+    candidates.resize(options.max_verified);
+  }
   // Point-to-plane ICP on the cloud's points; the refined motion in canonical form, its keypoint
   // matches swapped when that form is the inverse.
   auto refine_cloud_candidate = [&](Candidate& c) {

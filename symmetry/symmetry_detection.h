@@ -50,6 +50,7 @@ struct SymmetryStats {
   std::size_t pair_transforms = 0;
   std::size_t candidates = 0;       ///< distinct refined candidates
   std::size_t verified = 0;         ///< candidates whose region was computed
+  std::size_t unverified = 0;       ///< candidates beyond SymmetryOptions::max_verified, never verified
   std::size_t rejected_early = 0;   ///< dropped by the seed test before growing
   std::size_t rejected_small = 0;   ///< r-symmetric area below the minimum
   double seconds_per_verified = 0.0;

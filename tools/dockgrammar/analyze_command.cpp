@@ -27,7 +27,8 @@ namespace dg::cli {
 void add_analyze_command(CLI::App& app) {
   struct Options {
     ModelOptions model;
-    double tolerance_eps = RegionOptions{}.offset_tolerance_eps;
+    SearchOptions search;
+    std::size_t site_symmetries = DockingSiteOptions{}.max_symmetries;
     std::string output = ".";
     std::uint64_t seed = 1;
     std::string up;
@@ -36,7 +37,13 @@ void add_analyze_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "analyze", "Find the symmetries and grid rules of a model; write NAME.grammar.json, NAME.report.md and pictures");
   add_model_options(*command, options->model);
-  add_tolerance_option(*command, options->tolerance_eps);
+  add_search_options(*command, options->search);
+  command
+      ->add_option("--site-symmetries", options->site_symmetries,
+                   "Symmetries whose motions give docking sites, one per repetition family, largest r-symmetric area "
+                   "first; more lets motions of small parts (one branch level onto the next) give context-free rules")
+      ->check(CLI::Range(std::size_t(1), std::size_t(10000)))
+      ->capture_default_str();
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
       ->capture_default_str();
@@ -45,7 +52,7 @@ void add_analyze_command(CLI::App& app) {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
-    const SymmetryResult symmetries = detect_symmetries(prepared, symmetry_options(options->tolerance_eps), progress);
+    const SymmetryResult symmetries = detect_symmetries(prepared, symmetry_options(options->search), progress);
 
     Stopwatch stopwatch;
     std::vector<StageTiming> grammar_timings;
@@ -69,11 +76,13 @@ void add_analyze_command(CLI::App& app) {
     grammar_timings.push_back({"grid rules", stopwatch.lap()});
     std::optional<MaterialHint> materials;
     if (material_hint_applies(prepared, options->model.prepare, grammar.grids.size())) {  // timed only when it runs
-      materials = material_hint(prepared, options->model.prepare, symmetry_options(options->tolerance_eps), grammar.grids.size(),
+      materials = material_hint(prepared, options->model.prepare, symmetry_options(options->search), grammar.grids.size(),
                                 progress);
       grammar_timings.push_back({"material hint", stopwatch.lap()});
     }
-    const DockingSiteResult docking = find_docking_sites(prepared, symmetries, {}, progress);
+    DockingSiteOptions site_options;
+    site_options.max_symmetries = options->site_symmetries;
+    const DockingSiteResult docking = find_docking_sites(prepared, symmetries, site_options, progress);
     grammar_timings.push_back({"docking sites", stopwatch.lap()});
     ContextFreeOptions cf_options;
     cf_options.seed = options->seed;

@@ -263,13 +263,23 @@ std::string generate_rules_text(const AnalysisReport& report) {
          "--rules context-free uses them";
 }
 
+// Which symmetries gave docking sites: "the top K symmetries (...)", naming those left out.
+std::string examined_symmetries_text(const DockingSiteStats& stats) {
+  const std::size_t examined = stats.motions / 2;
+  std::string text = fmt::format("the top {} symmetr{} (one per repetition family, largest r-symmetric area first", examined,
+                                 examined == 1 ? "y" : "ies");
+  if (stats.symmetries_skipped > 0)
+    text += fmt::format("; {} more not examined: `--site-symmetries` examines more", stats.symmetries_skipped);
+  return text + ")";
+}
+
 std::string context_free_markdown(const AnalysisReport& report) {
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
   std::string md = fmt::format(
-      "## Docking sites and context-free rules\n\n{} elementary docking sites over the top symmetries: {} insert, {} delete, "
+      "## Docking sites and context-free rules\n\n{} elementary docking sites over {}: {} insert, {} delete, "
       "{} replace ({} marked as colliding, {} slippable).{}\n\n",
-      report.docking.sites.size(), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
+      report.docking.sites.size(), examined_symmetries_text(report.docking.stats), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.collides; }),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }),
       report.docking.sites.empty() ? ""
@@ -503,6 +513,8 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"families", report.symmetries.families.size()},
           {"docking_sites", docking_sites_json(report)},
           {"dockers", report.docking.sites.size()},
+          {"unverified_candidates", report.symmetries.stats.unverified},
+          {"unexamined_symmetries", report.docking.stats.symmetries_skipped},
           {"operations", operation_counts(report.docking)},
           {"nonterminals", nonterminals_json(report.grammar.context_free)},
           {"productions", productions_json(report.grammar.context_free)},
@@ -536,7 +548,9 @@ void write_analysis_report(const AnalysisReport& report) {
   if (const std::string moved = origin_text(prepared); !moved.empty()) md += moved + "\n\n";
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
   md += symmetry_table(report.symmetries, 20, report.prepared.origin);
-  md += "```\n\n## Grid rules\n\n";
+  md += "```\n\n";
+  if (const std::string unverified = unverified_candidates_text(report.symmetries); !unverified.empty()) md += unverified + "\n";
+  md += "## Grid rules\n\n";
   if (report.grammar.grids.empty())
     md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
           "area).\n\n";

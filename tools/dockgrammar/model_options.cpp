@@ -36,20 +36,28 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");
 }
 
-void add_tolerance_option(CLI::App& command, double& tolerance_eps) {
+void add_search_options(CLI::App& command, SearchOptions& options) {
   command
-      .add_option("--tolerance", tolerance_eps,
+      .add_option("--tolerance", options.tolerance_eps,
                   "How far apart, in voxels (eps), mapped geometry may lie from its image and still count as a "
                   "copy: the default suits exact repeats; 0.2-0.3 finds repeats that were placed or modelled "
                   "a little unevenly (bars of a hand-made railing); larger values start to merge different shapes")
       ->check(CLI::Range(0.01, 1.0))
       ->capture_default_str();
+  command
+      .add_option("--candidates", options.candidates,
+                  "Symmetry candidates verified on the voxel surface, those whose feature-line ends agree most "
+                  "often first; more finds motions of small parts among many repeats (each costs about as much "
+                  "as one of the default ones; the report says how many went unverified)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
+      ->capture_default_str();
 }
 
-SymmetryOptions symmetry_options(double tolerance_eps) {
+SymmetryOptions symmetry_options(const SearchOptions& search) {
   SymmetryOptions options;
-  options.region.offset_tolerance_eps = tolerance_eps;
-  options.region.cloud_offset_tolerance_eps = std::max(options.region.cloud_offset_tolerance_eps, tolerance_eps);
+  options.region.offset_tolerance_eps = search.tolerance_eps;
+  options.region.cloud_offset_tolerance_eps = std::max(options.region.cloud_offset_tolerance_eps, search.tolerance_eps);
+  options.max_verified = search.candidates;
   return options;
 }
 

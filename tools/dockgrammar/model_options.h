@@ -25,13 +25,20 @@ struct ModelOptions {
 /// Registers MODEL, -r, --voxel, --sharp-angle, --threads, --quiet and --json on a subcommand.
 void add_model_options(CLI::App& command, ModelOptions& options);
 
-/// Registers --tolerance on a subcommand that detects symmetries: how far apart (in voxels, eps)
-/// mapped geometry may lie from its image and still match.
-void add_tolerance_option(CLI::App& command, double& tolerance_eps);
+/// How a subcommand that detects symmetries searches: the matching tolerance and how many
+/// candidates it verifies.
+struct SearchOptions {
+  /// How far apart (in voxels, eps) mapped geometry may lie from its image and still match.
+  double tolerance_eps = RegionOptions{}.offset_tolerance_eps;
+  std::size_t candidates = SymmetryOptions{}.max_verified;  ///< candidates verified, best supported first
+};
 
-/// Symmetry detection options with that position tolerance for meshes (point clouds keep their
-/// own, wider one unless the tolerance is wider still).
-SymmetryOptions symmetry_options(double tolerance_eps);
+/// Registers --tolerance and --candidates on a subcommand that detects symmetries.
+void add_search_options(CLI::App& command, SearchOptions& options);
+
+/// Symmetry detection options for a search: its position tolerance for meshes (point clouds keep
+/// their own, wider one unless the tolerance is wider still) and its number of candidates verified.
+SymmetryOptions symmetry_options(const SearchOptions& search);
 
 /// Caps TBB's threads as --threads asks (the returned object must stay alive while working).
 std::unique_ptr<tbb::global_control> limit_threads(int threads);

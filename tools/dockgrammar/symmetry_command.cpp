@@ -16,7 +16,7 @@ namespace dg::cli {
 void add_symmetry_command(CLI::App& app) {
   struct Options {
     ModelOptions model;
-    double tolerance_eps = RegionOptions{}.offset_tolerance_eps;
+    SearchOptions search;
     std::size_t top = 10;
     std::string output;
     std::string up;
@@ -24,7 +24,7 @@ void add_symmetry_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
   add_model_options(*command, options->model);
-  add_tolerance_option(*command, options->tolerance_eps);
+  add_search_options(*command, options->search);
   command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(positive_number());
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
   add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y");
@@ -32,7 +32,7 @@ void add_symmetry_command(CLI::App& app) {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
-    const SymmetryResult result = detect_symmetries(prepared, symmetry_options(options->tolerance_eps), progress);
+    const SymmetryResult result = detect_symmetries(prepared, symmetry_options(options->search), progress);
     if (!options->output.empty())
       write_symmetry_pictures(options->output, prepared, result, options->top, model_up_axis(options->model.model_path, options->up));
     if (options->model.json) {
@@ -49,6 +49,7 @@ void add_symmetry_command(CLI::App& app) {
       fmt::print("model {}: r = {:.6g}, eps = {:.6g}\n{}\n{}", prepared.model.source_path, prepared.surface.r(),
                  prepared.surface.eps(), moved.empty() ? "" : "origin: " + moved + "\n",
                  symmetry_table(result, options->top, prepared.origin));
+      if (const std::string unverified = unverified_candidates_text(result); !unverified.empty()) fmt::print("\n{}", unverified);
     }
   });
 }

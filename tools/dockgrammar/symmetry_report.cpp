@@ -69,6 +69,14 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top, const 
   return out;
 }
 
+std::string unverified_candidates_text(const SymmetryResult& result) {
+  const SymmetryStats& st = result.stats;
+  if (st.unverified == 0) return "";
+  return fmt::format("The {} candidates whose feature-line ends agree most often were verified; {} more were not "
+                     "(`--candidates` verifies more).\n",
+                     st.candidates - st.unverified, st.unverified);
+}
+
 nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, const Vec3& origin) {
   nlohmann::json symmetries = nlohmann::json::array();
   for (std::size_t i = 0; i < std::min(top, result.symmetries.size()); ++i) {
@@ -110,6 +118,7 @@ nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, cons
             {"pair_transforms", st.pair_transforms},
             {"candidates", st.candidates},
             {"verified", st.verified},
+            {"unverified", st.unverified},
             {"rejected_early", st.rejected_early},
             {"rejected_small", st.rejected_small},
             {"seconds_per_verified", st.seconds_per_verified}}},

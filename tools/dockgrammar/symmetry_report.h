@@ -22,6 +22,10 @@ nlohmann::json matrix_json(const RigidTransform& t);
 /// model file's coordinates (`origin`: PreparedModel::origin).
 std::string symmetry_table(const SymmetryResult& result, std::size_t top, const Vec3& origin);
 
+/// One sentence saying how many candidates went unverified and that --candidates verifies more
+/// (ends with a newline); empty when every candidate was verified.
+std::string unverified_candidates_text(const SymmetryResult& result);
+
 /// {"symmetries": [...], "families": [...], "stats": {...}, "timings_s": {...}} for the first
 /// `top`, motions in the model file's coordinates (`origin`: PreparedModel::origin).
 nlohmann::json symmetry_json(const SymmetryResult& result, std::size_t top, const Vec3& origin);
