@@ -278,22 +278,23 @@ class Builder {
     }
   }
 
-  // Non-terminals: nodes connected by site motions, frames composed along a spanning tree.
-  // Non-terminals: locations joined by their docking-site relations. A relation joins two
-  // locations unless the docker of one, put in place of the other's, leaves that site's loops
-  // in more groups than its own docker does (site_loops): a piece that only caps each of eight
-  // stems, put where a whole subtree joined them, would leave the model in floating parts, each
-  // closed and r-similar.
+  // Non-terminals: nodes connected by site motions, frames composed along a spanning tree. A
+  // relation connects two locations unless the docker of one, put in place of the other's, leaves
+  // that site's loops in more groups than its own docker does (site_loops): a piece that only
+  // caps each of eight stems, put where a whole subtree joined them, would leave the model in
+  // floating parts, each closed and r-similar.
   void assign_classes() {
     std::vector<SiteLoops> loops(nodes_.size());
-    tbb::parallel_for(std::size_t(0), nodes_.size(),
-                      [&](std::size_t i) { loops[i] = site_loops(surface_, nodes_[i].site, nodes_[i].docker); });
+    std::vector<std::size_t> own_groups(nodes_.size());  // the exemplar's groups at each location
+    tbb::parallel_for(std::size_t(0), nodes_.size(), [&](std::size_t i) {
+      loops[i] = site_loops(surface_, nodes_[i].site, nodes_[i].docker);
+      own_groups[i] = *joined_loop_groups(surface_, nodes_[i].site, loops[i], loops[i], RigidTransform{});
+    });
     // Whether the docker of `from` (carried onto `to` by `motion`) in place of that of `to` keeps
-    // its loops joined.
+    // its loops joined (also when its loops land on no loop of `to`: nothing to compare).
     auto keeps_joined = [&](std::size_t from, std::size_t to, const RigidTransform& motion) {
-      const std::optional<std::size_t> own = joined_loop_groups(surface_, nodes_[to].site, loops[to], loops[to], RigidTransform{});
       const std::optional<std::size_t> swapped = joined_loop_groups(surface_, nodes_[to].site, loops[to], loops[from], motion);
-      return !own || !swapped || *swapped <= *own;
+      return !swapped || *swapped <= own_groups[to];
     };
     std::vector<std::vector<std::pair<std::size_t, RigidTransform>>> edges(nodes_.size());
     for (const Relation& r : relations_) {

@@ -1,5 +1,6 @@
 #include "grammar/site_loops.h"
 
+#include "grammar/cell_components.h"
 #include "grammar/cell_sets.h"
 #include "geometry/union_find.h"
 
@@ -15,57 +16,23 @@ std::int64_t index_in(const std::vector<std::uint32_t>& cells, std::uint32_t cel
   return it != cells.end() && *it == cell ? it - cells.begin() : -1;
 }
 
-// Labels the cells reachable from `start` through cells whose flag in `allowed` is set with
-// `id` (cells labelled already stop the walk).
-void flood(const VoxelSurface& surface, std::uint32_t start, const std::vector<char>& allowed, std::int32_t id,
-           std::vector<std::int32_t>& label) {
-  std::vector<std::uint32_t> queue{start};
-  label[start] = id;
-  for (std::size_t head = 0; head < queue.size(); ++head)
-    for (std::uint32_t n : surface.neighbours(queue[head]))
-      if (allowed[n] && label[n] < 0) {
-        label[n] = id;
-        queue.push_back(n);
-      }
-}
-
 }  // namespace
 
 SiteLoops site_loops(const VoxelSurface& surface, const std::vector<std::uint32_t>& site, const std::vector<std::uint32_t>& docker) {
   SiteLoops out;
-  out.loop_of.assign(site.size(), -1);
-  std::vector<std::size_t> queue;
-  for (std::size_t i = 0; i < site.size(); ++i) {
-    if (out.loop_of[i] >= 0) continue;
-    const auto id = static_cast<std::int32_t>(out.representative.size());
-    out.representative.push_back(site[i]);
-    out.loop_of[i] = id;
-    queue.assign(1, i);
-    for (std::size_t head = 0; head < queue.size(); ++head)
-      for (std::uint32_t n : surface.neighbours(site[queue[head]])) {
-        const std::int64_t j = index_in(site, n);
-        if (j >= 0 && out.loop_of[static_cast<std::size_t>(j)] < 0) {
-          out.loop_of[static_cast<std::size_t>(j)] = id;
-          queue.push_back(static_cast<std::size_t>(j));
-        }
-      }
-  }
-  // The rest of the model: every cell outside the docker, walked from each loop.
-  const std::vector<char> in_docker = mask_of(docker, surface.cell_count());
-  std::vector<char> outside(in_docker.size());
-  for (std::size_t c = 0; c < outside.size(); ++c) outside[c] = !in_docker[c];
-  std::vector<std::int32_t> rest(surface.cell_count(), -1);
-  std::int32_t rest_parts = 0;
-  for (std::uint32_t cell : out.representative) {
-    if (rest[cell] < 0) flood(surface, cell, outside, rest_parts++, rest);
-    out.rest_part.push_back(static_cast<std::uint32_t>(rest[cell]));
-  }
-  // The docker's parts and the loops each touches.
-  std::vector<std::int32_t> part(surface.cell_count(), -1);
-  std::int32_t parts = 0;
-  for (std::uint32_t c : docker)
-    if (part[c] < 0) flood(surface, c, in_docker, parts++, part);
-  out.docker_parts.resize(static_cast<std::size_t>(parts));
+  std::size_t count = 0;
+  const std::vector<std::int32_t> loop = label_components(surface, mask_of(site, surface.cell_count()), count);
+  out.representative.assign(count, 0);
+  out.loop_of.reserve(site.size());
+  for (auto c = site.rbegin(); c != site.rend(); ++c) out.representative[static_cast<std::size_t>(loop[*c])] = *c;  // lowest cell
+  for (std::uint32_t c : site) out.loop_of.push_back(loop[c]);
+  // The rest of the model (every cell outside the docker) and the docker, in connected parts.
+  std::vector<char> mask = mask_of(docker, surface.cell_count());
+  const std::vector<std::int32_t> part = label_components(surface, mask, count);
+  out.docker_parts.resize(count);
+  for (char& flag : mask) flag = !flag;  // now the cells outside the docker
+  const std::vector<std::int32_t> rest = label_components(surface, mask, count);
+  for (std::uint32_t cell : out.representative) out.rest_part.push_back(static_cast<std::uint32_t>(rest[cell]));
   for (std::size_t i = 0; i < site.size(); ++i)
     for (std::uint32_t n : surface.neighbours(site[i]))
       if (part[n] >= 0) out.docker_parts[static_cast<std::size_t>(part[n])].push_back(static_cast<std::uint32_t>(out.loop_of[i]));

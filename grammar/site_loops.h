@@ -26,7 +26,7 @@ SiteLoops site_loops(const VoxelSurface& surface, const std::vector<std::uint32_
 /// Into how many groups the loops of location `at` fall, joined through the rest of the model
 /// at `at` and through each connected part of the docker of location `from`, whose loops
 /// `from_to_at` carries onto those of `at` (the identity with `from` = `at`: the exemplar as it
-/// is). Nothing when a loop of `from` lands on no loop of `at`.
+/// is; then never nothing). Nothing when a loop of `from` lands on no loop of `at`.
 std::optional<std::size_t> joined_loop_groups(const VoxelSurface& surface, const std::vector<std::uint32_t>& at_site,
                                               const SiteLoops& at, const SiteLoops& from, const RigidTransform& from_to_at);
 

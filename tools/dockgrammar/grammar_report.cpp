@@ -279,7 +279,8 @@ std::string context_free_markdown(const AnalysisReport& report) {
   std::string md = fmt::format(
       "## Docking sites and context-free rules\n\n{} elementary docking sites over {}: {} insert, {} delete, "
       "{} replace ({} marked as colliding, {} slippable).{}\n\n",
-      report.docking.sites.size(), examined_symmetries_text(report.docking.stats), ops["insert"].get<int>(), ops["delete"].get<int>(), ops["replace"].get<int>(),
+      report.docking.sites.size(), examined_symmetries_text(report.docking.stats), ops["insert"].get<int>(),
+      ops["delete"].get<int>(), ops["replace"].get<int>(),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.collides; }),
       std::count_if(report.docking.sites.begin(), report.docking.sites.end(), [](const DockingSite& s) { return s.slippable; }),
       report.docking.sites.empty() ? ""
