@@ -297,6 +297,37 @@ std::vector<std::uint32_t> read_point_indices(const std::filesystem::path& file,
   return indices;
 }
 
+// Each slot's exemplar production must belong to the slot's non-terminal, and following them
+// from the axiom must end (they retrace the exemplar's inclusion tree): else rebuilding the
+// exemplar, the fallback of every derivation, would never finish.
+void check_exemplar_productions(const ContextFreeGrammar& cf, const std::string& where) {
+  const std::size_t n = cf.productions.size();
+  auto production = [&](std::size_t i) -> const ShapeProduction& { return i < n ? cf.productions[i] : cf.axiom; };
+  std::vector<char> state(n + 1, 0);  // 0 unseen, 1 on the walk's path, 2 finished
+  std::vector<std::pair<std::size_t, std::size_t>> path{{n, 0}};  // production, next child
+  state[n] = 1;
+  while (!path.empty()) {
+    auto& [index, next] = path.back();
+    const ShapeProduction& p = production(index);
+    if (next == p.children.size()) {
+      state[index] = 2;
+      path.pop_back();
+      continue;
+    }
+    const ChildSlot& slot = p.children[next++];
+    if (cf.productions[slot.original_production].lhs != slot.nonterminal)
+      throw InputError(where + ": a child slot of non-terminal " + cf.nonterminals[slot.nonterminal].name + " names production " +
+                       std::to_string(slot.original_production) + ", which is not one of its productions");
+    if (state[slot.original_production] == 1)
+      throw InputError(where + ": production " + std::to_string(slot.original_production) +
+                       " rebuilds the exemplar through itself (the slots' original productions form a cycle)");
+    if (state[slot.original_production] == 0) {
+      state[slot.original_production] = 1;
+      path.push_back({slot.original_production, 0});
+    }
+  }
+}
+
 template <class LoadTerminal>
 void read_context_free(const nlohmann::json& document, int version, const std::string& where, const LoadTerminal& load_terminal,
                        ContextFreeGrammar& cf) {
@@ -321,6 +352,7 @@ void read_context_free(const nlohmann::json& document, int version, const std::s
     if (cf.productions.back().lhs == kNoProduction) throw InputError(where + ": a production has no left-hand side");
   }
   cf.axiom = read_production(field<nlohmann::json>(document, "axiom", where), where, names, productions.size(), load_terminal);
+  check_exemplar_productions(cf, where);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -88,18 +89,44 @@ struct PointPlacement {
   static double default_seam_tolerance(double eps) { return 2.0 * eps; }
 };
 
+// Per production (the axiom last): the amount (area, or points for a point-cloud grammar) its
+// exemplar expansion places: its terminal's plus, for each slot, that of the production
+// rebuilding the exemplar there.
+std::vector<double> exemplar_expansions(const ContextFreeGrammar& grammar) {
+  const bool points = grammar.of_points();
+  const std::size_t n = grammar.productions.size();
+  std::vector<double> amount(n + 1, -1.0);
+  std::function<double(std::size_t)> of = [&](std::size_t i) {
+    if (amount[i] >= 0.0) return amount[i];
+    amount[i] = 0.0;  // a cycle (read_grammar rejects them) adds nothing instead of recursing forever
+    const ShapeProduction& p = i < n ? grammar.productions[i] : grammar.axiom;
+    double total = points ? static_cast<double>(p.terminal_points.positions.size()) : p.terminal.area();
+    for (const ChildSlot& c : p.children) total += of(c.original_production);
+    return amount[i] = total;
+  };
+  for (std::size_t i = 0; i <= n; ++i) of(i);
+  return amount;
+}
+
 // One derivation drawing from `random`; nothing when a slot's exemplar production, placed after
 // its random choices collided (or past the depth or size limits), would itself collide with
 // what an earlier random choice put there. With options.exemplar_only nothing is checked.
+// `expansions` as exemplar_expansions gives them: a slot takes a drawn production only when the
+// amount the model would have if every open slot then took its exemplar production (`expected`)
+// stays within options' size range, so the finished model's amount (`expected` at the end) does.
 template <class Placement>
 std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, const Candidates& choices, double eps,
-                                           const ShapeDerivationOptions& options, Random& random) {
+                                           const ShapeDerivationOptions& options, const std::vector<double>& expansions,
+                                           Random& random) {
   using Piece = typename Placement::Piece;
   constexpr bool points = std::is_same_v<Piece, PointCloud>;
   ShapeDerivation result;
   const double seam_tolerance = options.seam_tolerance > 0 ? options.seam_tolerance : Placement::default_seam_tolerance(eps);
   typename Placement::Collisions collisions(points ? eps : seam_tolerance);
   std::size_t placed_size = 0;
+  const double exemplar_amount = expansions.back();
+  const double lowest = options.min_size * exemplar_amount, highest = options.max_size * exemplar_amount;
+  double expected = exemplar_amount;
   std::deque<OpenSlot> open;
   std::uint32_t placed = 0;  // pieces placed so far
   std::vector<std::uint32_t> seam_copies;  // per vertex of the result: its placed piece when on an open edge of it
@@ -131,7 +158,12 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
     const bool too_big = placed_size > options.max_triangles;
     result.depth_limited = result.depth_limited || too_deep;
     result.triangle_limited = result.triangle_limited || too_big;
-    const std::vector<std::size_t> candidates = choices.at(slot.slot.nonterminal, slot.world);
+    const std::size_t original = slot.slot.original_production;
+    std::vector<std::size_t> candidates = choices.at(slot.slot.nonterminal, slot.world);
+    std::erase_if(candidates, [&](std::size_t p) {
+      const double after = expected - expansions[original] + expansions[p];
+      return p != original && (after < lowest || after > highest);
+    });
     std::optional<std::pair<std::size_t, Piece>> accepted;  // production and its moved terminal
     if (!options.exemplar_only && !too_deep && !too_big && !candidates.empty()) {
       for (int attempt = 0; attempt < options.retries && !accepted; ++attempt) {
@@ -147,7 +179,6 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
       if (!accepted) ++result.fallbacks;
     }
     if (!accepted) {
-      const std::size_t original = slot.slot.original_production;
       const ShapeProduction& p = grammar.productions[original];
       Piece piece = transformed(Placement::terminal(p), slot.world);
       if (options.exemplar_only)
@@ -157,7 +188,8 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
       accepted.emplace(original, std::move(piece));
     }
     result.productions.push_back(accepted->first);
-    result.changed = result.changed || accepted->first != slot.slot.original_production;
+    result.changed = result.changed || accepted->first != original;
+    expected += expansions[accepted->first] - expansions[original];
     place(accepted->first, slot.world, slot.depth, accepted->second);
   }
   if (!points && options.weld_seams) {
@@ -173,16 +205,17 @@ std::optional<ShapeDerivation> derive_once(const ContextFreeGrammar& grammar, co
 template <class Placement>
 ShapeDerivation derive(const ContextFreeGrammar& grammar, double eps, const ShapeDerivationOptions& options) {
   const Candidates choices(grammar, options.up);
+  const std::vector<double> expansions = exemplar_expansions(grammar);
   Random random(options.seed);
   std::size_t restarts = 0;
   for (; restarts <= options.restarts; ++restarts)
-    if (std::optional<ShapeDerivation> derived = derive_once<Placement>(grammar, choices, eps, options, random)) {
+    if (std::optional<ShapeDerivation> derived = derive_once<Placement>(grammar, choices, eps, options, expansions, random)) {
       derived->restarts = restarts;
       return std::move(*derived);
     }
   ShapeDerivationOptions rebuild = options;
   rebuild.exemplar_only = true;
-  ShapeDerivation exemplar = *derive_once<Placement>(grammar, choices, eps, rebuild, random);
+  ShapeDerivation exemplar = *derive_once<Placement>(grammar, choices, eps, rebuild, expansions, random);
   exemplar.restarts = restarts;
   return exemplar;
 }
@@ -192,14 +225,19 @@ ShapeDerivation derive(const ContextFreeGrammar& grammar, double eps, const Shap
 bool derivation_has_choice(const ContextFreeGrammar& grammar, const ShapeDerivationOptions& options) {
   if (grammar.empty() || options.exemplar_only) return false;
   const Candidates choices(grammar, options.up);
+  const std::vector<double> expansions = exemplar_expansions(grammar);
+  const double exemplar_amount = expansions.back();
   std::vector<OpenSlot> open;
   for (const ChildSlot& c : grammar.axiom.children) open.push_back({c, c.placement, 1});
   while (!open.empty()) {
     const OpenSlot slot = open.back();
     open.pop_back();
     if (slot.depth > options.max_depth) continue;
-    for (std::size_t p : choices.at(slot.slot.nonterminal, slot.world))
-      if (p != slot.slot.original_production) return true;
+    const std::size_t original = slot.slot.original_production;
+    for (std::size_t p : choices.at(slot.slot.nonterminal, slot.world)) {
+      const double size = exemplar_amount > 0.0 ? (exemplar_amount - expansions[original] + expansions[p]) / exemplar_amount : 1.0;
+      if (p != original && size >= options.min_size && size <= options.max_size) return true;
+    }
     for (const ChildSlot& c : grammar.productions[slot.slot.original_production].children)
       open.push_back({c, slot.world.after(c.placement), slot.depth + 1});
   }

@@ -8,10 +8,14 @@
 // Such an exemplar production is checked too: where an earlier random choice left no room for
 // it, the derivation starts over (the random stream goes on), and after `restarts` such starts
 // the exemplar itself is rebuilt, so a derived model never holds colliding pieces.
+// With a size range, a production is drawn only where the derivation keeps its size (surface
+// area, or points) within the range: the size it would have if every open slot then took its
+// exemplar production stays inside, so the finished model's does too.
 
 #include "grammar/context_free.h"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +35,12 @@ struct ShapeDerivationOptions {
   /// this axis pointing as it did in the exemplar (rotations about it stay allowed), so a window
   /// is never placed lying on its side. Needs every production's source_frame.
   std::optional<Vec3> up;
+  /// Size range of the derived model as fractions of the exemplar's (surface area; the number of
+  /// points for a point-cloud grammar): min_size <= 1 <= max_size. Productions that would leave
+  /// it are not drawn. The default keeps at least half the exemplar (without it, a cap that can
+  /// take the place of a whole subtree makes most variants stubs) and sets no upper limit.
+  double min_size = 0.5;
+  double max_size = std::numeric_limits<double>::infinity();
 };
 
 struct ShapeDerivation {

@@ -21,6 +21,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <unistd.h>
 
@@ -38,6 +39,8 @@ void add_generate_command(CLI::App& app) {
     std::string rules = "auto";
     int max_depth = 24;
     std::size_t max_triangles = 5'000'000;
+    double min_size = ShapeDerivationOptions{}.min_size;
+    double max_size = ShapeDerivationOptions{}.max_size;
     int threads = 0;
     bool pictures = false;
     std::string up;
@@ -66,6 +69,16 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--max-triangles", options->max_triangles,
                       "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's production")
       ->capture_default_str();
+  command
+      ->add_option("--min-size", options->min_size,
+                   "Context-free: every variant keeps at least this fraction of the exemplar's size (surface area; points "
+                   "for a point-cloud grammar); productions that would leave less are not drawn")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--max-size", options->max_size,
+                   "Context-free: no variant grows past this multiple of the exemplar's size (default: no limit)")
+      ->check(CLI::Range(1.0, 1e9));
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
       ->check(non_negative_number());
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
@@ -93,8 +106,11 @@ void add_generate_command(CLI::App& app) {
                                                                : VariantRules::automatic;
     variant_options.derivation.max_depth = options->max_depth;
     variant_options.derivation.max_triangles = options->max_triangles;
+    variant_options.derivation.min_size = options->min_size;
+    variant_options.derivation.max_size = options->max_size;
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
+    const double exemplar_size = points ? static_cast<double>(grammar.exemplar_points.positions.size()) : grammar.exemplar.area();
     std::size_t limited = 0, rebuilt = 0, unchanged = 0, one_grid_only = 0;
     std::string one_grid_reason;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
@@ -132,6 +148,7 @@ void add_generate_command(CLI::App& app) {
                           {"grids", grids},
                           {"productions", productions},
                           {"changed", variant.changed},
+                          {"size", points ? static_cast<double>(variant.points.positions.size()) / exemplar_size : mesh.area() / exemplar_size},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
                           {"restarts", d.restarts},
