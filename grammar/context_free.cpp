@@ -28,6 +28,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <unordered_map>
 
 namespace dg {
@@ -209,7 +210,7 @@ class Builder {
 
   ContextFreeGrammar build(const DockingSiteResult& sites, ContextFreeStats& stats) {
     collect_nodes(sites, stats);
-    assign_classes();
+    assign_classes(stats);
     choose_seams();
     if (cloud_) {
       point_pieces();
@@ -283,7 +284,7 @@ class Builder {
   // that site's loops in more groups than its own docker does (site_loops): a piece that only
   // caps each of eight stems, put where a whole subtree joined them, would leave the model in
   // floating parts, each closed and r-similar.
-  void assign_classes() {
+  void assign_classes(ContextFreeStats& stats) {
     std::vector<SiteLoops> loops(nodes_.size());
     std::vector<std::size_t> own_groups(nodes_.size());  // the exemplar's groups at each location
     tbb::parallel_for(std::size_t(0), nodes_.size(), [&](std::size_t i) {
@@ -297,8 +298,12 @@ class Builder {
       return !swapped || *swapped <= own_groups[to];
     };
     std::vector<std::vector<std::pair<std::size_t, RigidTransform>>> edges(nodes_.size());
+    std::set<std::pair<std::size_t, std::size_t>> kept_apart;
     for (const Relation& r : relations_) {
-      if (!keeps_joined(r.from, r.to, r.motion) || !keeps_joined(r.to, r.from, r.motion.inverse())) continue;
+      if (!keeps_joined(r.from, r.to, r.motion) || !keeps_joined(r.to, r.from, r.motion.inverse())) {
+        kept_apart.insert(std::minmax(r.from, r.to));
+        continue;
+      }
       edges[r.from].push_back({r.to, r.motion});
       edges[r.to].push_back({r.from, r.motion.inverse()});
     }
@@ -324,6 +329,10 @@ class Builder {
       n.kept = n.klass != kNone;
       n.frame_inverse = n.frame.inverse();
     }
+    // Pairs some other relation joined after all do not count.
+    stats.locations_kept_apart = static_cast<std::size_t>(std::count_if(kept_apart.begin(), kept_apart.end(), [&](const auto& pair) {
+      return nodes_[pair.first].klass != nodes_[pair.second].klass || nodes_[pair.first].klass == kNone;
+    }));
   }
 
   // One seam per non-terminal, from its first location: a plane when the band lies flat and the

@@ -103,6 +103,10 @@ struct ContextFreeStats {
   /// so the seam at the second location would not be the first's, moved.
   std::size_t sites_stray_seam = 0;
   std::size_t nodes = 0;             ///< distinct site locations
+  /// Pairs of locations a site relates that do not share a non-terminal: the docker of one, put
+  /// in place of the other's, would leave that site's loops in more groups (the model in more
+  /// parts) than its own docker does (grammar/site_loops).
+  std::size_t locations_kept_apart = 0;
   /// Kept locations whose frame was aligned on the seam of their non-terminal's first location
   /// (placed a little off the motion relating them), and the farthest such a seam moved (model
   /// units).

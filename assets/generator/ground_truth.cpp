@@ -22,7 +22,8 @@ nlohmann::json grid_json(const Repetition& first, const Repetition& second, cons
 Asset finish_asset(const std::string& name, const Parameters& parameters, TriangleMesh mesh,
                    const std::vector<Repetition>& repetitions, const nlohmann::json& grids,
                    const nlohmann::json& notes) {
-  nlohmann::json truth = {{"name", name}, {"generator", parameters.model}, {"parameters", parameters.used}, {"units", "m"}};
+  // Every generator builds its model standing on the xy plane: z is up.
+  nlohmann::json truth = {{"name", name}, {"generator", parameters.model}, {"parameters", parameters.used}, {"units", "m"}, {"up", "z"}};
   truth.update(mesh_statistics(mesh));
   truth["repetitions"] = nlohmann::json::array();
   for (const Repetition& r : repetitions) truth["repetitions"].push_back(to_json(r));

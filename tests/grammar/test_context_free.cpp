@@ -670,10 +670,15 @@ TEST_CASE("corpus: the Sweet Home 3D railing's rules rebuild it in few triangles
   check_variants_verify(*a, 3);
 }
 
-TEST_CASE("20 random pipe-tree variants: closed, no self-intersections, verify passes", "[grammar][context_free][verify]") {
+TEST_CASE("20 random pipe-tree variants: closed, no self-intersections, verify passes, and site locations that would split the tree stay apart", "[grammar][context_free][verify]") {
   const Analysed a = analyse("pipe_tree", {{"depth", 3}});
   REQUIRE_FALSE(a.grammar.empty());
   CHECK(check_variants(a, 20).first.size() >= 3);  // trees of different sizes
+  // The site of eight loops around the leaf stems, whose docker is the tree below at one location
+  // and the eight caps at the other, is among the pairs kept apart; the fence's sites are single
+  // bands, so none of its pairs is.
+  CHECK(a.stats.locations_kept_apart >= 1);
+  CHECK(analyse("fence", {{"n", 4}}).stats.locations_kept_apart == 0);
 }
 
 TEST_CASE("docking sites do not depend on how the model is turned", "[grammar][docking]") {

@@ -96,11 +96,13 @@ int run(int argc, char** argv) {
     dg::assets::write_asset_points(asset, output, points, seed, noise);
     std::cout << fmt::format("{}: {} points drawn on {} triangles -> {} and {}\n", asset.name, points, asset.mesh.triangles.size(),
                              output.string(), dg::assets::ground_truth_path(output).string());
+    std::cout << fmt::format("z is up: dockgrammar analyze {} --up z\n", output.string());
     return 0;
   }
   dg::assets::write_asset_files(asset, output);
   std::cout << fmt::format("{}: {} triangles -> {} and {}\n", asset.name, asset.mesh.triangles.size(), output.string(),
                            dg::assets::ground_truth_path(output).string());
+  std::cout << fmt::format("z is up (most OBJ readers assume y): dockgrammar analyze {} --up z\n", output.string());
   return 0;
 }
 

@@ -102,6 +102,15 @@ std::string moving_text(const ContextFreeStats& stats) {
                      stats.productions_moving_the_model);
 }
 
+// "N pair(s) of site locations ... kept apart" when the loop rule left related locations in
+// different non-terminals.
+std::string kept_apart_text(const ContextFreeStats& stats) {
+  return fmt::format("{} pair(s) of docking-site locations related by a symmetry were kept in separate non-terminals: the "
+                     "docker of one, put in place of the other's, would leave the model in more parts (it joins fewer of "
+                     "the site's loops, such as the stems of a tree, than the docker it replaces)",
+                     stats.locations_kept_apart);
+}
+
 // " 16 sites sat up to 0.13 eps off ..." when the fit test aligned locations on their
 // non-terminal's reference seam; empty otherwise.
 std::string aligned_text(const ContextFreeStats& stats, double eps) {
@@ -315,6 +324,7 @@ std::string context_free_markdown(const AnalysisReport& report) {
   md += fmt::format("\nWith these rules: {}.\n", generate_rules_text(report));
   if (report.context_free.productions_moving_the_model > 0) md += "\n" + moving_text(report.context_free) + ".\n";
   if (report.context_free.unreachable_nonterminals > 0) md += "\n" + unreachable_text(report.context_free) + ".\n";
+  if (report.context_free.locations_kept_apart > 0) md += "\n" + kept_apart_text(report.context_free) + ".\n";
   md += fmt::format("\nPicture: `{}.rules.png` (the exemplar rebuilt from its productions, each piece coloured by the "
                     "non-terminal it fills, the axiom's terminal light grey).\n",
                     model_stem(report));
@@ -516,6 +526,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"dockers", report.docking.sites.size()},
           {"unverified_candidates", report.symmetries.stats.unverified},
           {"unexamined_symmetries", report.docking.stats.symmetries_skipped},
+          {"locations_kept_apart", report.context_free.locations_kept_apart},
           {"operations", operation_counts(report.docking)},
           {"nonterminals", nonterminals_json(report.grammar.context_free)},
           {"productions", productions_json(report.grammar.context_free)},
