@@ -135,3 +135,40 @@ TEST_CASE("up axis: an OBJ thinnest along y but not a thin wall is guessed y-up"
   CHECK(taller_than_wide(folder / "z" / "symmetry_01.png"));
   fs::remove_all(folder);
 }
+
+// glTF defines +Y as up: a variant written as .glb is turned so that the exemplar's up axis
+// becomes +y, (x, y, z) -> (x, z, -y) for the z-up facade (a thin wall, guessed z-up), while
+// OBJ keeps the model's axes; an explicit --up y keeps them in the .glb too.
+TEST_CASE("up axis: generate and resize turn a z-up facade so that its up axis is glTF's +y", "[tools][pictures]") {
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-glb-test");
+  const dg::test::AnalyzedModel facade = dg::test::analyze_model("facade_3x4", folder);
+  REQUIRE(facade.run.status == 0);
+  const std::string grammar = facade.grammar.string();
+  // Largest distance between a vertex of `glb` and that of `obj` mapped by `turn`.
+  auto offset = [](const dg::TriangleMesh& glb, const dg::TriangleMesh& obj, auto turn) {
+    REQUIRE(glb.positions.size() == obj.positions.size());
+    double largest = 0.0;
+    for (std::size_t v = 0; v < obj.positions.size(); ++v) largest = std::max(largest, (glb.positions[v] - turn(obj.positions[v])).norm());
+    return largest;
+  };
+  auto z_to_y = [](const dg::Vec3& p) { return dg::Vec3(p.x(), p.z(), -p.y()); };
+  auto same = [](const dg::Vec3& p) { return p; };
+  constexpr double kFloat32 = 1e-5;  // glb stores float32
+
+  for (const char* format : {"obj", "glb"})
+    REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --rules grid --format " + format + " -q -o " + (folder / format).string(),
+                              folder)
+                .status == 0);
+  const dg::TriangleMesh obj = dg::read_model(folder / "obj" / "variant_00000.obj").mesh;
+  CHECK(obj.bounds().size().z() > 5 * obj.bounds().size().y());  // the OBJ stands on z as the exemplar
+  CHECK(offset(dg::read_model(folder / "glb" / "variant_00000.glb").mesh, obj, z_to_y) < kFloat32);
+
+  for (const char* file : {"resized.obj", "resized.glb"})
+    REQUIRE(dg::test::run_cli("resize " + grammar + " --grid grid1=4x5 -q -o " + (folder / file).string(), folder).status == 0);
+  CHECK(offset(dg::read_model(folder / "resized.glb").mesh, dg::read_model(folder / "resized.obj").mesh, z_to_y) < kFloat32);
+
+  REQUIRE(dg::test::run_cli("generate " + grammar + " --count 1 --rules grid --format glb --up y -q -o " + (folder / "y").string(), folder)
+              .status == 0);
+  CHECK(offset(dg::read_model(folder / "y" / "variant_00000.glb").mesh, obj, same) < kFloat32);
+  fs::remove_all(folder);
+}

@@ -13,6 +13,7 @@
 #include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/output_folder.h"
+#include "tools/dockgrammar/output_frame.h"
 #include "tools/dockgrammar/pictures.h"
 #include "synthesis/variants.h"
 
@@ -126,7 +127,8 @@ void add_generate_command(CLI::App& app) {
         write_point_cloud(folder / file, transformed(variant.points, to_source_frame(grammar)));
         if (options->pictures) write_points_picture(png, variant.points.positions, {}, kSplatRadius * grammar.eps, picture);
       } else {
-        write_mesh_with_materials(folder / file, transformed(mesh, to_source_frame(grammar)), grammar.materials);
+        write_mesh_with_materials(folder / file, transformed(mesh, file_frame(file, picture.camera.up.normalized()).after(to_source_frame(grammar))),
+                                  grammar.materials);
         if (options->pictures) write_mesh_picture(png, mesh, material_colors(mesh, grammar.materials), {}, picture);
       }
       nlohmann::json grids = nlohmann::json::object();

@@ -10,6 +10,7 @@
 #include "grammar/grammar_file.h"
 #include "synthesis/several_grids.h"
 #include "tools/dockgrammar/output_folder.h"
+#include "tools/dockgrammar/output_frame.h"
 #include "tools/dockgrammar/pictures.h"
 
 #include <fmt/core.h>
@@ -87,7 +88,8 @@ void add_resize_command(CLI::App& app) {
     }
     const TriangleMesh result = resize_grids(grammar, resizes);
     create_output_folder(output.parent_path());
-    write_mesh_with_materials(output, transformed(result, to_source_frame(grammar)), grammar.materials);
+    write_mesh_with_materials(output, transformed(result, file_frame(output, picture.camera.up.normalized()).after(to_source_frame(grammar))),
+                              grammar.materials);
     if (options->picture)
       write_mesh_picture(std::filesystem::path(output).replace_extension(".png"), result, material_colors(result, grammar.materials),
                          {}, picture);
