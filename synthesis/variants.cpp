@@ -4,6 +4,7 @@
 #include "geometry/same_surface.h"
 #include "geometry/random.h"
 #include "synthesis/several_grids.h"
+#include "synthesis/verify.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +74,25 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   return plan;
 }
 
+namespace {
+
+// `dockgrammar verify` of a derived model against the grammar's exemplar at the grammar's r.
+VerifyReport verify_derivation(const ShapeGrammar& grammar, const ShapeDerivation& derived) {
+  Model exemplar, candidate;
+  if (is_point_grammar(grammar)) {
+    exemplar.cloud = grammar.exemplar_points;
+    candidate.cloud = derived.points;
+  } else {
+    exemplar.mesh = grammar.exemplar;
+    candidate.mesh = derived.mesh;
+  }
+  VerifyOptions options;
+  options.r = grammar.r;
+  return verify_models(std::move(exemplar), std::move(candidate), options);
+}
+
+}  // namespace
+
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options) {
   Variant variant;
   if (plan.context_free) {
@@ -83,13 +103,32 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     // only on the plan.
     constexpr std::uint64_t kRedraws = 8;
     ShapeDerivationOptions derivation = options.derivation;
+    bool failed = false;  // the last draw failed verify
     for (std::uint64_t draw = 0; draw <= kRedraws; ++draw) {
       derivation.seed = draw == 0 ? plan.seed : variant_seed(plan.seed, draw);
       variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
       variant.changed = variant.derivation.changed &&
                         (is_point_grammar(grammar) ? !same_points(variant.derivation.points, grammar.exemplar_points, grammar.eps)
                                                    : !same_surface(variant.derivation.mesh, grammar.exemplar, grammar.eps));
+      variant.r_similar.reset();
+      failed = false;
+      if (variant.changed && options.verify) {
+        const VerifyReport report = verify_derivation(grammar, variant.derivation);
+        variant.r_similar = report.similarity.fraction;
+        failed = !report.pass;
+        if (failed) {
+          ++variant.failed_verify;
+          continue;
+        }
+      }
       if (variant.changed || (draw == 0 && !derivation_has_choice(grammar.context_free, derivation))) break;
+    }
+    if (failed) {
+      derivation.exemplar_only = true;
+      variant.derivation = derive_shape(grammar.context_free, grammar.eps, derivation);
+      variant.changed = false;
+      variant.r_similar.reset();
+      variant.verify_fallback = true;
     }
     variant.mesh = std::move(variant.derivation.mesh);
     variant.points = std::move(variant.derivation.points);

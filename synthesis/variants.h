@@ -6,6 +6,7 @@
 #include "synthesis/shape_derivation.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,12 @@ struct VariantOptions {
   double range_factor = 2.0;
   /// Context-free variants: retries, limits (the seed is set per variant).
   ShapeDerivationOptions derivation;
+  /// Context-free variants: check every changed draw as `dockgrammar verify` does (closed and
+  /// free of self-intersections where the exemplar is, r-similar at the grammar's r) and draw
+  /// again when it fails (with the redraws of unchanged draws, up to 8 in all); when every draw
+  /// failed, the variant is the exemplar rebuilt. Collision checks alone let pieces come within
+  /// r of each other without touching, which can make neighbourhoods the exemplar lacks.
+  bool verify = false;
 };
 
 /// The random choices of one variant.
@@ -49,6 +56,12 @@ struct Variant {
   std::vector<std::vector<int>> grid_counts;
   /// Why the grids were not resized together (resize_grids' error); empty when they were.
   std::string one_grid_only;
+  /// With VariantOptions::verify (context-free variants): draws that failed the check, the
+  /// r-similar fraction of the kept draw when it was checked (a draw with the exemplar's surface
+  /// is not), and whether every draw failed so the result is the exemplar rebuilt.
+  std::size_t failed_verify = 0;
+  std::optional<double> r_similar;
+  bool verify_fallback = false;
 };
 
 /// Seed of variant `index` of a batch started with `seed` (SplitMix64 of both).
@@ -64,7 +77,7 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
 /// productions give the exemplar's surface again (within eps, see same_surface: another
 /// decomposition of the same parts), is drawn again (up to 8 times, with seeds derived from the
 /// plan's), so variants differ from the exemplar whenever the grammar offers a choice; `changed`
-/// says whether the result does.
+/// says whether the result does. With options.verify, draws that fail verify are drawn again too.
 Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, const VariantOptions& options = {});
 
 }  // namespace dg

@@ -44,6 +44,7 @@ void add_generate_command(CLI::App& app) {
     double max_size = ShapeDerivationOptions{}.max_size;
     int threads = 0;
     bool pictures = false;
+    bool verify = true;
     std::string up;
     std::string orientation = "upright";
     bool quiet = false;
@@ -83,6 +84,9 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
       ->check(non_negative_number());
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
+  command->add_flag("--verify,!--no-verify", options->verify,
+                    "Context-free: check every variant as `verify` does (closed, no self-intersections, r-similar at the "
+                    "grammar's r) and draw again when it fails; the exemplar is rebuilt when no draw passes (default: on)");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
   command
       ->add_option("--orientation", options->orientation,
@@ -107,12 +111,13 @@ void add_generate_command(CLI::App& app) {
                                                                : VariantRules::automatic;
     variant_options.derivation.max_depth = options->max_depth;
     variant_options.derivation.max_triangles = options->max_triangles;
+    variant_options.verify = options->verify;
     variant_options.derivation.min_size = options->min_size;
     variant_options.derivation.max_size = options->max_size;
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
     const double exemplar_size = points ? static_cast<double>(grammar.exemplar_points.positions.size()) : grammar.exemplar.area();
-    std::size_t limited = 0, rebuilt = 0, unchanged = 0, one_grid_only = 0;
+    std::size_t limited = 0, rebuilt = 0, unchanged = 0, one_grid_only = 0, failed_verify = 0;
     std::string one_grid_reason;
     const bool progress = !options->quiet && ::isatty(STDERR_FILENO);
     nlohmann::json variants = nlohmann::json::array();
@@ -142,7 +147,8 @@ void add_generate_command(CLI::App& app) {
       for (std::size_t p : d.productions) productions.push_back(p);
       if (d.depth_limited || d.triangle_limited) ++limited;
       if (d.restarts > variant_options.derivation.restarts) ++rebuilt;
-      if (!variant.changed) ++unchanged;
+      if (variant.verify_fallback) ++failed_verify;
+      else if (!variant.changed) ++unchanged;
       variants.push_back({{"index", index},
                           {"file", file},
                           {"seed", plan.seed},
@@ -150,6 +156,8 @@ void add_generate_command(CLI::App& app) {
                           {"grids", grids},
                           {"productions", productions},
                           {"changed", variant.changed},
+                          {"failed_verify", variant.failed_verify},
+                          {"r_similar", variant.r_similar ? nlohmann::json(*variant.r_similar) : nlohmann::json(nullptr)},
                           {"size", points ? static_cast<double>(variant.points.positions.size()) / exemplar_size : mesh.area() / exemplar_size},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
@@ -171,6 +179,9 @@ void add_generate_command(CLI::App& app) {
       fmt::print(stderr,
                  "note: {} variant(s) have the exemplar's shape: in up to 9 draws each, the rules gave nothing else\n",
                  unchanged);
+    if (failed_verify > 0 && !options->quiet)
+      fmt::print(stderr, "note: {} variant(s) are the exemplar rebuilt: every draw failed verify (not r-similar, open or "
+                         "self-intersecting)\n", failed_verify);
     if (one_grid_only > 0 && !options->quiet)
       fmt::print(stderr, "note: {} variant(s) resize one grid only, the others keep the exemplar's counts: {}\n", one_grid_only,
                  one_grid_reason);
