@@ -116,6 +116,8 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_size = options->max_size;
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
+    // Model frame -> the mesh files' (the source model's axes; a .glb turned so that up is +y).
+    const RigidTransform to_file = file_frame("variant." + format, picture.camera.up.normalized()).after(to_source_frame(grammar));
     const double exemplar_size = points ? static_cast<double>(grammar.exemplar_points.positions.size()) : grammar.exemplar.area();
     std::size_t limited = 0, rebuilt = 0, unchanged = 0, one_grid_only = 0, failed_verify = 0;
     std::string one_grid_reason;
@@ -132,8 +134,7 @@ void add_generate_command(CLI::App& app) {
         write_point_cloud(folder / file, transformed(variant.points, to_source_frame(grammar)));
         if (options->pictures) write_points_picture(png, variant.points.positions, {}, kSplatRadius * grammar.eps, picture);
       } else {
-        write_mesh_with_materials(folder / file, transformed(mesh, file_frame(file, picture.camera.up.normalized()).after(to_source_frame(grammar))),
-                                  grammar.materials);
+        write_mesh_with_materials(folder / file, transformed(mesh, to_file), grammar.materials);
         if (options->pictures) write_mesh_picture(png, mesh, material_colors(mesh, grammar.materials), {}, picture);
       }
       nlohmann::json grids = nlohmann::json::object();
@@ -158,7 +159,7 @@ void add_generate_command(CLI::App& app) {
                           {"changed", variant.changed},
                           {"failed_verify", variant.failed_verify},
                           {"r_similar", variant.r_similar ? nlohmann::json(*variant.r_similar) : nlohmann::json(nullptr)},
-                          {"size", points ? static_cast<double>(variant.points.positions.size()) / exemplar_size : mesh.area() / exemplar_size},
+                          {"size", (points ? static_cast<double>(variant.points.positions.size()) : mesh.area()) / exemplar_size},
                           {"collisions_retried", d.collisions_retried},
                           {"fallbacks", d.fallbacks},
                           {"restarts", d.restarts},

@@ -88,8 +88,8 @@ void add_resize_command(CLI::App& app) {
     }
     const TriangleMesh result = resize_grids(grammar, resizes);
     create_output_folder(output.parent_path());
-    write_mesh_with_materials(output, transformed(result, file_frame(output, picture.camera.up.normalized()).after(to_source_frame(grammar))),
-                              grammar.materials);
+    const RigidTransform to_file = file_frame(output, picture.camera.up.normalized()).after(to_source_frame(grammar));
+    write_mesh_with_materials(output, transformed(result, to_file), grammar.materials);
     if (options->picture)
       write_mesh_picture(std::filesystem::path(output).replace_extension(".png"), result, material_colors(result, grammar.materials),
                          {}, picture);
