@@ -18,18 +18,18 @@
 
 namespace dg {
 
-namespace {
-
-/// Largest absolute coordinate accepted from a file (beyond it double precision is too coarse
-/// for the tolerances the pipeline uses).
-constexpr double max_coordinate = 1e15;
-
 std::string lower_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
 }
+
+namespace {
+
+/// Largest absolute coordinate accepted from a file (beyond it double precision is too coarse
+/// for the tolerances the pipeline uses).
+constexpr double max_coordinate = 1e15;
 
 /// Whole file as bytes; InputError when it is missing, a folder, unreadable or empty.
 std::string load_file(const std::filesystem::path& path) {

@@ -9,6 +9,9 @@
 
 namespace dg {
 
+/// The extension of `path` in lower case, with its dot (".glb"); empty when it has none.
+std::string lower_extension(const std::filesystem::path& path);
+
 /// Reads OBJ, OFF, PLY (ascii/binary), STL (ascii/binary), glTF 2.0 (.gltf/.glb) and XYZ.
 /// Polygons are triangulated inside their outlines (geometry/polygon_triangulation.h); glTF instances of the default scene get their node transforms.
 /// A PLY without faces and an XYZ file give a point cloud. Positions are NOT welded here

@@ -38,7 +38,7 @@ TEST_CASE("verified variants: spiral stairs derived in any orientation all pass 
   options.rules = dg::VariantRules::context_free;
   options.derivation.min_size = 0.0;
   options.verify = true;
-  std::size_t changed = 0, rejected = 0;
+  std::size_t changed = 0;
   for (std::uint64_t i = 0; i < 24; ++i) {
     const dg::Variant variant = dg::build_variant(grammar, dg::plan_variant(grammar, 1, i, options), options);
     INFO("variant " << i << ": " << variant.failed_verify << " draws failed verify");
@@ -49,11 +49,8 @@ TEST_CASE("verified variants: spiral stairs derived in any orientation all pass 
       REQUIRE(variant.r_similar);
       CHECK(*variant.r_similar >= dg::VerifyOptions{}.min_similar_fraction);
     }
-    rejected += variant.failed_verify;
   }
   CHECK(changed >= 20);
-  INFO(rejected << " draws failed verify and were drawn again");
-  SUCCEED();
 }
 
 TEST_CASE("verified variants: when no draw can pass, the variant is the exemplar rebuilt", "[synthesis][variants][verify]") {

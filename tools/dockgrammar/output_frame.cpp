@@ -1,18 +1,14 @@
 #include "tools/dockgrammar/output_frame.h"
 
-#include <Eigen/Geometry>
+#include "geometry/model_io.h"
 
-#include <algorithm>
-#include <cctype>
-#include <string>
+#include <Eigen/Geometry>
 
 namespace dg::cli {
 
 RigidTransform file_frame(const std::filesystem::path& path, const Vec3& up) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   RigidTransform frame;
-  if (extension == ".glb") frame.rotation = Eigen::Quaterniond::FromTwoVectors(up, Vec3::UnitY()).toRotationMatrix();
+  if (lower_extension(path) == ".glb") frame.rotation = Eigen::Quaterniond::FromTwoVectors(up, Vec3::UnitY()).toRotationMatrix();
   return frame;
 }
 

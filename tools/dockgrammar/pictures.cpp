@@ -18,8 +18,7 @@ void add_up_option(CLI::App& command, std::string& axis, const std::string& fall
 
 std::string model_up_axis(const std::string& model_path, const std::string& given) {
   if (!given.empty()) return given;
-  std::string extension = std::filesystem::path(model_path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string extension = lower_extension(model_path);
   return extension == ".gltf" || extension == ".glb" ? "y" : "";
 }
 
