@@ -20,17 +20,6 @@ double unit(std::uint64_t& state) {
 
 constexpr std::int64_t kKeyBias = 1 << 20;
 
-// Maps each key of a sorted key sequence (key_at(0 .. n-1)) to its index range.
-template <class Key, class Range, class KeyAt>
-void fill_ranges(std::size_t n, const KeyAt& key_at, std::unordered_map<Key, Range>& ranges) {
-  for (std::size_t begin = 0; begin < n;) {
-    std::size_t end = begin + 1;
-    while (end < n && key_at(end) == key_at(begin)) ++end;
-    ranges.emplace(key_at(begin), Range{static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)});
-    begin = end;
-  }
-}
-
 }  // namespace
 
 std::uint64_t splitmix64(std::uint64_t x) {
@@ -100,7 +89,7 @@ void SurfaceIndex::set_samples(std::vector<SurfacePoint> points, std::vector<std
     samples_.push_back(points[i]);
     sample_elements_.push_back(elements[i]);
   }
-  fill_ranges(order.size(), [&](std::size_t i) { return keys[order[i]]; }, buckets_);
+  buckets_.assign(order.size(), [&](std::size_t i) { return keys[order[i]]; });
 }
 
 Vec3 SurfaceIndex::closest_on_element(std::uint32_t element, const Vec3& q) const {
@@ -177,7 +166,7 @@ void SurfaceIndex::build_triangle_grid(double max_cutoff) {
   tbb::parallel_sort(items.begin(), items.end());
   cell_triangles_.reserve(items.size());
   for (const auto& item : items) cell_triangles_.push_back(item.second);
-  fill_ranges(items.size(), [&](std::size_t i) { return items[i].first; }, triangle_buckets_);
+  triangle_buckets_.assign(items.size(), [&](std::size_t i) { return items[i].first; });
 }
 
 SurfaceIndex::Key SurfaceIndex::key(const Vec3& p, double cell) {
@@ -197,9 +186,9 @@ void SurfaceIndex::gather(const Vec3& p, double radius, std::vector<std::uint32_
     for (auto j = static_cast<std::int64_t>(std::floor(lo.y())); j <= static_cast<std::int64_t>(std::floor(hi.y())); ++j)
       for (auto k = static_cast<std::int64_t>(std::floor(lo.z())); k <= static_cast<std::int64_t>(std::floor(hi.z())); ++k) {
         const Vec3 corner = (Vec3(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)).array() + 0.5) * cell_;
-        const auto found = buckets_.find(key(corner, cell_));
-        if (found == buckets_.end()) continue;
-        for (std::uint32_t s = found->second.first; s < found->second.second; ++s)
+        const CellRanges::Range* found = buckets_.find(key(corner, cell_));
+        if (!found) continue;
+        for (std::uint32_t s = found->first; s < found->second; ++s)
           if ((samples_[s].position - p).squaredNorm() <= radius2) out.push_back(s);
       }
   std::sort(out.begin(), out.end());
@@ -277,9 +266,9 @@ bool SurfaceIndex::near_any_of(const Vec3& q, double cutoff, const std::vector<s
 template <class Visit>
 bool SurfaceIndex::visit_elements(const Vec3& q, Visit&& visit) const {
   if (cloud_) return point_grid_->any_within(q, point_reach_, [&](std::uint32_t point, double) { return visit(point); });
-  const auto found = triangle_buckets_.find(key(q, triangle_cell_));
-  if (found == triangle_buckets_.end()) return false;
-  for (std::uint32_t i = found->second.first; i < found->second.second; ++i)
+  const CellRanges::Range* found = triangle_buckets_.find(key(q, triangle_cell_));
+  if (!found) return false;
+  for (std::uint32_t i = found->first; i < found->second; ++i)
     if (visit(cell_triangles_[i])) return true;
   return false;
 }

@@ -6,6 +6,7 @@
 // mesh are its triangles; those of a point cloud are its points, each a small disk in its
 // tangent plane (a splat) whose normal has no sign.
 
+#include "geometry/cell_ranges.h"
 #include "geometry/closest_point.h"
 #include "geometry/mesh.h"
 #include "geometry/point_grid.h"
@@ -14,7 +15,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 namespace dg {
@@ -84,7 +84,6 @@ class SurfaceIndex {
 
  private:
   using Key = std::uint64_t;
-  using Range = std::pair<std::uint32_t, std::uint32_t>;
   static Key key(const Vec3& p, double cell);
   void set_samples(std::vector<SurfacePoint> points, std::vector<std::uint32_t> elements);
   void build_triangle_grid(double max_cutoff);
@@ -107,9 +106,9 @@ class SurfaceIndex {
   std::vector<std::uint32_t> vertex_offsets_;    // mesh: triangles around vertex v: vertex_triangles_[offsets[v] .. offsets[v+1])
   std::vector<std::uint32_t> vertex_triangles_;
   std::unique_ptr<PointGrid> point_grid_;        // cloud: points by cells of point_reach_
-  std::unordered_map<Key, Range> buckets_;       // key -> sample range
+  CellRanges buckets_;                           // key -> sample range
   std::vector<std::uint32_t> cell_triangles_;
-  std::unordered_map<Key, Range> triangle_buckets_;  // mesh: key -> range of cell_triangles_
+  CellRanges triangle_buckets_;                  // mesh: key -> range of cell_triangles_
 };
 
 /// splitmix64: a small, well-mixed 64-bit hash (per-triangle random streams, fixed shuffles).
