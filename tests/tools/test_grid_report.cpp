@@ -34,3 +34,29 @@ TEST_CASE("analyze: with no grid, the report names the strongest repeating trans
   CHECK(sentence.find("|t| = 2;") != std::string::npos);
   CHECK(sentence.find("does not repeat with them") != std::string::npos);
 }
+
+TEST_CASE("analyze: with no grid, the report's grid section names the translations that repeat without one",
+          "[tools][grids]") {
+  // Four equal boxes in a row, 2 apart, on a sphere: the translation repeats, but every plane
+  // between two boxes crosses the sphere, so no slab repeats.
+  dg::TriangleMesh mesh = dg::test::make_sphere(dg::Vec3(0.0, 0.0, -3.0), 4.0, 32, 64);
+  for (int i = 0; i < 4; ++i) {
+    const double x = -3.5 + 2.0 * i;
+    dg::test::append(mesh, dg::test::make_box(dg::Vec3(x, -0.5, 1.5), dg::Vec3(x + 1.0, 0.5, 2.5)));
+  }
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report-repeats");
+  dg::write_mesh(folder / "row.obj", mesh);
+  const dg::test::CliRun run = dg::test::run_cli("analyze " + (folder / "row.obj").string() + " -q -o " + folder.string(), folder);
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  std::ifstream in(folder / "row.report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(report);
+  const std::size_t grids = report.find("## Grid rules");
+  REQUIRE(grids != std::string::npos);
+  const std::string section = report.substr(grids, report.find("\n## ", grids + 1) - grids);
+  const std::size_t named = section.find("No grid found. Repeating, but without a grid: translation F");
+  REQUIRE(named != std::string::npos);
+  CHECK(section.find("repeats of |t| = 2)", named) != std::string::npos);
+  CHECK(report.find("## Not yet built") != std::string::npos);
+}

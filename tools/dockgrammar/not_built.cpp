@@ -32,14 +32,24 @@ std::string families_text(const SymmetryResult& symmetries, const std::vector<st
   return text;
 }
 
-}  // namespace
-
-std::vector<std::string> not_built_items(const AnalysisReport& report) {
+// The repeating families no grid uses, less the one a tolerance hint names with a remedy.
+UnusedRepeats unused_repeats_of(const AnalysisReport& report) {
   std::vector<GridRule> grids;
   for (const GridWithPieces& grid : report.grammar.grids) grids.push_back(grid.rule);
   UnusedRepeats unused = unused_repeats(report.symmetries, grids, GridOptions{}.min_repeats);
-  if (report.tolerance_hint)
-    std::erase(unused.translations, report.tolerance_hint->family);  // the hint names it with a remedy
+  if (report.tolerance_hint) std::erase(unused.translations, report.tolerance_hint->family);
+  return unused;
+}
+
+}  // namespace
+
+std::string translations_without_grid_text(const AnalysisReport& report) {
+  const UnusedRepeats unused = unused_repeats_of(report);
+  return unused.translations.empty() ? "" : families_text(report.symmetries, unused.translations, "translation");
+}
+
+std::vector<std::string> not_built_items(const AnalysisReport& report) {
+  const UnusedRepeats unused = unused_repeats_of(report);
   std::vector<std::string> items;
   if (!unused.partial_turns.empty())
     items.push_back(fmt::format("{} give{} no grid: grids of pure rotations (no slide along the axis) are not built",

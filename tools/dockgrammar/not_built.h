@@ -15,4 +15,8 @@ namespace dg::cli {
 /// names), docking sites dropped for a docker that does not fit the other location's seam.
 std::vector<std::string> not_built_items(const AnalysisReport& report);
 
+/// The translation families that repeat but gave no grid, as not_built_items names them
+/// ("translation F2 (6 repeats of |t| = 54)"); empty when there are none.
+std::string translations_without_grid_text(const AnalysisReport& report);
+
 }  // namespace dg::cli
