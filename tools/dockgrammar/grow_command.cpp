@@ -4,6 +4,7 @@
 #include "tools/dockgrammar/commands.h"
 
 #include "geometry/errors.h"
+#include "geometry/model_io.h"
 #include "geometry/stopwatch.h"
 #include "synthesis/growth.h"
 #include "synthesis/growth_render.h"
@@ -15,7 +16,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -34,12 +34,6 @@ struct GrowOptions {
   double line_width = 1.2;
   bool json = false;
 };
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
 
 // Applies edits and returns the guides they changed (sorted, without repeats).
 std::vector<std::size_t> apply_edits(GrowthScene& scene, const std::vector<GuideEdit>& edits) {

@@ -4,6 +4,7 @@
 #include "tools/dockgrammar/commands.h"
 
 #include "geometry/errors.h"
+#include "geometry/model_io.h"
 #include "geometry/image.h"
 #include "grammar/derivation.h"
 #include "grammar/grammar_length.h"
@@ -44,12 +45,6 @@ struct PrintOptions {
   std::string input;
   bool json = false;
 };
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
 
 LSystem read_lsystem(const std::string& path) {
   return lower_extension(path) == ".json" ? read_lsystem_json(path) : read_lsystem_text(path);

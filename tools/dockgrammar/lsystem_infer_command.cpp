@@ -5,6 +5,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
+#include "geometry/model_io.h"
 #include "geometry/png_reader.h"
 #include "geometry/svg_reader.h"
 #include "grammar/generalization.h"
@@ -17,7 +18,6 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -36,18 +36,12 @@ struct InferOptions {
   DrawingInferenceOptions inference;
 };
 
-std::string extension_of(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
 void run_infer(const InferOptions& options) {
-  const std::string input_extension = extension_of(options.input);
+  const std::string input_extension = lower_extension(options.input);
   if (input_extension != ".svg" && input_extension != ".png")
     throw InputError(options.input + ": lsystem infer reads .svg (vector) or .png (pixel) files");
   if (!options.output.empty()) {
-    const std::string extension = extension_of(options.output);
+    const std::string extension = lower_extension(options.output);
     if (extension != ".ls" && extension != ".json") throw InputError(options.output + ": the output must end in .ls or .json");
     std::error_code ignored;
     if (std::filesystem::equivalent(options.input, options.output, ignored))
@@ -105,7 +99,7 @@ void run_infer(const InferOptions& options) {
                       {"pieces", front_end->pieces},          {"components", front_end->components},
                       {"front_end_s", front_end->seconds}};
   if (!options.output.empty()) {
-    const bool as_json = extension_of(options.output) == ".json";
+    const bool as_json = lower_extension(options.output) == ".json";
     write_file_atomically(options.output, [&](std::ostream& out) { out << (as_json ? json.dump(2) + "\n" : inferred.text); }, false);
   }
   if (options.json) fmt::print("{}\n", json.dump(2));
