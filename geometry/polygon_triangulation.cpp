@@ -11,9 +11,11 @@ using Vec2 = Eigen::Vector2d;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// Whether p lies inside or on the counter-clockwise triangle (a, b, c).
-bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
-  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
+// Whether p lies inside or on the counter-clockwise triangle (a, b, c), or outside by no more
+// than `on` from its edges' lines.
+bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, double on) {
+  return cross(b - a, p - a) >= -on * (b - a).norm() && cross(c - b, p - b) >= -on * (c - b).norm() &&
+         cross(a - c, p - c) >= -on * (a - c).norm();
 }
 
 }  // namespace
@@ -67,6 +69,16 @@ std::vector<Triangle> triangulate_polygon(const std::vector<Vec3>& positions, st
     const Vec3 p = positions[corners[i]] - first;
     points[i] = Vec2(p.dot(u), p.dot(v));
   }
+  // Corners that stand out of the line through their neighbours by no more than this (1e-6 of
+  // the polygon's extent, above float rounding of the file's coordinates) are flat, not ears, and
+  // corners that near an ear's edge lie on it (block it): a run of collinear corners (a floor's
+  // edge notched by column plinths, each notch corner on the line) clipped there, or skipped by
+  // an ear whose diagonal passes a rounding's width beside them, leaves needle triangles of about
+  // zero width whose normals point anywhere (and whose edges count as sharp), wherever the
+  // clipping happened to pass.
+  double extent = 0.0;
+  for (std::size_t i = 1; i < n; ++i) extent = std::max(extent, (points[i] - points[0]).lpNorm<Eigen::Infinity>());
+  const double flat_height = 1e-6 * extent;
   std::vector<std::size_t> remaining(n);
   for (std::size_t i = 0; i < n; ++i) remaining[i] = i;
   std::vector<Triangle> triangles;
@@ -82,14 +94,14 @@ std::vector<Triangle> triangulate_polygon(const std::vector<Vec3>& positions, st
     // An ear: a strictly convex corner whose triangle holds no other corner (corners at the same
     // position as one of its own, where a polygon runs around a hole and back, do not count).
     auto is_ear = [&](std::size_t k) {
-      if (!(turn(k) > 0.0)) return false;
       const std::size_t ia = remaining[(k + m - 1) % m], ib = remaining[k], ic = remaining[(k + 1) % m];
       const Vec2 &a = points[ia], &b = points[ib], &c = points[ic];
+      if (!(turn(k) > flat_height * (c - a).norm())) return false;
       for (std::size_t j : remaining) {
         if (j == ia || j == ib || j == ic) continue;
         const Vec2& p = points[j];
         if (p == a || p == b || p == c) continue;
-        if (inside_or_on(p, a, b, c)) return false;
+        if (inside_or_on(p, a, b, c, flat_height)) return false;
       }
       return true;
     };

@@ -110,13 +110,21 @@ std::size_t drop_unreachable_nonterminals(ContextFreeGrammar& grammar) {
   return static_cast<std::size_t>(std::count(reached.begin(), reached.end(), 0));
 }
 
-// Drops the productions of the flagged non-terminals that rebuild no slot of the exemplar (no
-// slot names them as their original production) and whose derivation has no choice left (no
-// non-terminal reachable from their child slots has two productions): children come along with
-// the docker they lie in, so the result is the exemplar moved. An alternative whose children
-// recurse or vary is kept (the Hochhaus Asemwald's slab grows by segments). Renumbers the rest
-// (keep_rules). Returns how many went.
-std::size_t drop_alternatives_moving_the_model(ContextFreeGrammar& grammar, const std::vector<char>& flagged_nonterminals) {
+// How a docker cut at one location of a non-terminal and put at another moves the model.
+enum class SwapMotion : char {
+  none,       // it varies the model: the rest around the locations differs
+  in_place,   // it rebuilds the exemplar moved onto its own bounding box (a half turn of a slab)
+  elsewhere,  // it rebuilds the exemplar moved off its bounding box
+};
+
+// Drops the productions of non-terminals whose swaps move the model that rebuild no slot of the
+// exemplar (no slot names them as their original production): children come along with the
+// docker they lie in, so the result is the exemplar moved. When the motion keeps the model on
+// its own bounding box, an alternative whose children recurse or vary is kept (the Hochhaus
+// Asemwald turned about its middle: its slab still grows by segments); when it moves the model
+// off it, none is (the Quaternius bank's variants were the bank shifted by (339.2, 0, -54)).
+// Renumbers the rest (keep_rules). Returns how many went.
+std::size_t drop_alternatives_moving_the_model(ContextFreeGrammar& grammar, const std::vector<SwapMotion>& swaps) {
   std::vector<char> named(grammar.productions.size(), 0);
   auto mark = [&](const ShapeProduction& p) {
     for (const ChildSlot& slot : p.children) named[slot.original_production] = 1;
@@ -136,7 +144,9 @@ std::size_t drop_alternatives_moving_the_model(ContextFreeGrammar& grammar, cons
   std::vector<char> keep(grammar.productions.size(), 1);
   for (std::size_t p = 0; p < grammar.productions.size(); ++p) {
     const ShapeProduction& production = grammar.productions[p];
-    if (flagged_nonterminals[production.lhs] && !named[p] && !children_vary(production)) keep[p] = 0;
+    const SwapMotion swap = swaps[production.lhs];
+    if (swap == SwapMotion::none || named[p]) continue;
+    if (swap == SwapMotion::elsewhere || !children_vary(production)) keep[p] = 0;
   }
   keep_rules(grammar, std::vector<char>(grammar.nonterminals.size(), 1), keep);
   return static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
@@ -1067,7 +1077,7 @@ class Builder {
     }
     if (!grammar.empty())
       stats.productions_moving_the_model =
-          drop_alternatives_moving_the_model(grammar, nonterminals_whose_swaps_move_the_model(grammar.nonterminals.size()));
+          drop_alternatives_moving_the_model(grammar, swap_motions(grammar.nonterminals.size()));
     stats.unreachable_nonterminals = drop_unreachable_nonterminals(grammar);
   }
 
@@ -1093,9 +1103,17 @@ class Builder {
   // Per non-terminal: whether its kept locations, two or more, each have the rest of the model
   // (outside docker and band) where the motion from the first location carries the first's rest,
   // both ways. Then a docker cut at one location and put at another rebuilds the whole exemplar
-  // moved by that motion: no variation (a gear's tooth-wide strip that a translation repeats).
-  std::vector<char> nonterminals_whose_swaps_move_the_model(std::size_t nonterminal_count) const {
-    std::vector<char> flagged(nonterminal_count, 0);
+  // moved by that motion: no variation (a gear's tooth-wide strip that a translation repeats);
+  // in place when every such motion maps the model's bounding box onto itself within eps.
+  std::vector<SwapMotion> swap_motions(std::size_t nonterminal_count) const {
+    std::vector<SwapMotion> swaps(nonterminal_count, SwapMotion::none);
+    const BoundingBox box = cloud_ ? cloud_->bounds() : mesh_.bounds();
+    auto keeps_box = [&](const RigidTransform& motion) {
+      BoundingBox moved;
+      for (int corner = 0; corner < 8; ++corner) moved.add(motion.apply(box.corner(corner)));
+      return std::max((moved.min - box.min).cwiseAbs().maxCoeff(), (moved.max - box.max).cwiseAbs().maxCoeff()) <=
+             surface_.eps();
+    };
     for (std::size_t k = 0; k < class_nodes_.size(); ++k) {
       if (class_index_[k] == kNone) continue;
       std::vector<std::size_t> kept;
@@ -1103,15 +1121,16 @@ class Builder {
         if (nodes_[i].kept) kept.push_back(i);
       if (kept.size() < 2) continue;
       const Node& first = nodes_[kept.front()];
-      bool moves = true;
+      bool moves = true, in_place = true;
       for (std::size_t i = 1; i < kept.size() && moves; ++i) {
         const Node& other = nodes_[kept[i]];
         const RigidTransform motion = other.frame.after(first.frame_inverse);
         moves = rest_maps_onto(first, other, motion) && rest_maps_onto(other, first, motion.inverse());
+        in_place = in_place && keeps_box(motion);
       }
-      flagged[class_index_[k]] = moves ? 1 : 0;
+      if (moves) swaps[class_index_[k]] = in_place ? SwapMotion::in_place : SwapMotion::elsewhere;
     }
-    return flagged;
+    return swaps;
   }
 
   // Whether `p`'s terminal holds a triangle that cleaning drops while the exemplar is closed: it

@@ -1,6 +1,7 @@
 #include "geometry/model_io.h"
 #include "geometry/polygon_triangulation.h"
 #include "support/cli_run.h"
+#include "support/corpus.h"
 
 #include <catch2/catch.hpp>
 
@@ -124,4 +125,58 @@ TEST_CASE("model files: a notched n-gon in OBJ, OFF or PLY reads as triangles in
     const dg::Model model = dg::read_model(folder / name);
     require_tiles_comb(model.mesh.positions, model.mesh.triangles);
   }
+}
+
+TEST_CASE("polygon triangulation: corners a rounding's width off a straight edge leave no needle triangles",
+          "[geometry]") {
+  // A colonnade's floor: a strip 12 wide and 420 long along its outer edge x = 196.5, with six
+  // tabs 30 wide reaching in to x = 154.7 under the columns, so the inner edge x = 184.5 is a run
+  // of corners on one line. Its height drifts by 6e-5 along the strip in steps of 1e-5 (a file's
+  // coordinates rounded), so in the polygon's plane those corners lie a rounding's width off
+  // their line, on either side.
+  std::vector<Vec3> positions;
+  auto corner = [&](double x, double z) { positions.emplace_back(x, std::round((47.585 + 1.5e-7 * z) * 1e5) / 1e5, z); };
+  corner(196.5, -230.0);
+  corner(196.5, 190.0);
+  for (double z : {74.0, 20.0, -34.0, -88.0, -142.0, -196.0}) {
+    corner(184.5, z + 30.0);
+    corner(154.7, z + 30.0);
+    corner(154.7, z);
+    corner(184.5, z);
+  }
+  std::vector<std::uint32_t> corners(positions.size());
+  for (std::uint32_t i = 0; i < corners.size(); ++i) corners[i] = i;
+  const std::vector<dg::Triangle> triangles = dg::triangulate_polygon(positions, corners);
+  REQUIRE(triangles.size() == corners.size() - 2);
+  for (const dg::Triangle& t : triangles) {
+    const Vec3 a = positions[t[0]], b = positions[t[1]], c = positions[t[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    INFO("triangle " << a.transpose() << " / " << b.transpose() << " / " << c.transpose());
+    CHECK((b - a).cross(c - a).norm() / longest > 1e-3);  // its height over its longest side: no needle
+  }
+}
+
+TEST_CASE("corpus: the Quaternius bank's notched floors and ceilings triangulate without needle triangles",
+          "[geometry][corpus]") {
+  // Its plinth top and colonnade ceiling are horizontal n-gons with runs of corners on straight
+  // lines (one where each column notches them), some a rounding's width (1e-5) off the line:
+  // clipped there, they left triangles 1e-7 to 1e-5 wide whose normals pointed anywhere and
+  // whose edges counted as sharp along the whole colonnade. (Its stairs' sides hold polygons
+  // that run out along a line and back, a spike of no area, whose triangles cannot but be thin.)
+  const std::optional<std::filesystem::path> path = dg::test::corpus_file_if_present("meshes/arch-quaternius-bank/bank.obj");
+  if (!path) return;
+  const dg::Model model = dg::read_model(*path);
+  const dg::TriangleMesh& mesh = model.mesh;
+  const double extent = (mesh.bounds().max - mesh.bounds().min).maxCoeff();
+  std::size_t horizontal = 0, needles = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    if (std::max({a.y(), b.y(), c.y()}) - std::min({a.y(), b.y(), c.y()}) > 1e-3) continue;
+    ++horizontal;
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const double height = (b - a).cross(c - a).norm() / longest;
+    if (height < 1e-6 * extent) ++needles;
+  }
+  CHECK(horizontal > 500);
+  CHECK(needles == 0);
 }
