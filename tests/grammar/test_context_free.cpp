@@ -811,6 +811,25 @@ TEST_CASE("corpus: alternatives that only move the whole model are dropped (Swee
   CHECK(dg::test::hausdorff_distance(rebuilt.mesh, a->prepared.model.mesh) < a->prepared.surface.eps());
 }
 
+namespace {
+
+// Random derivations (seeds 1 to 4) of `a`'s grammar keep the exemplar's bounding box within eps.
+void check_derivations_stay_in_place(const Analysed& a) {
+  const dg::BoundingBox exemplar = a.prepared.model.mesh.bounds();
+  const double eps = a.prepared.surface.eps();
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    dg::ShapeDerivationOptions options;
+    options.seed = seed;
+    const dg::ShapeDerivation variant = dg::derive_shape(a.grammar, eps, options);
+    const dg::BoundingBox box = variant.mesh.bounds();
+    INFO("seed " << seed);
+    CHECK((box.min - exemplar.min).norm() < eps);
+    CHECK((box.max - exemplar.max).norm() < eps);
+  }
+}
+
+}  // namespace
+
 TEST_CASE("corpus: alternatives that move the whole model are dropped with the pieces inside them (Quaternius bank)",
           "[grammar][context_free][corpus]") {
   // Two locations of one non-terminal, most of the bank each, are related by a shift of 339.2
@@ -824,17 +843,7 @@ TEST_CASE("corpus: alternatives that move the whole model are dropped with the p
   if (!a) return;
   REQUIRE_FALSE(a->grammar.empty());
   CHECK(a->stats.productions_moving_the_model >= 1);
-  const dg::BoundingBox exemplar = a->prepared.model.mesh.bounds();
-  const double eps = a->prepared.surface.eps();
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    dg::ShapeDerivationOptions options;
-    options.seed = seed;
-    const dg::ShapeDerivation variant = dg::derive_shape(a->grammar, eps, options);
-    const dg::BoundingBox box = variant.mesh.bounds();
-    INFO("seed " << seed);
-    CHECK((box.min - exemplar.min).norm() < eps);
-    CHECK((box.max - exemplar.max).norm() < eps);
-  }
+  check_derivations_stay_in_place(*a);
 }
 
 TEST_CASE("corpus: the Hochhaus Asemwald's derivations stay in place", "[grammar][context_free][corpus]") {
@@ -843,17 +852,7 @@ TEST_CASE("corpus: the Hochhaus Asemwald's derivations stay in place", "[grammar
   // bounding box drops such an alternative, whatever varies inside it.
   const std::optional<Analysed> a = analyse_corpus("meshes/arch-fg-hochhaus-asemwald/hochhaus_asemwald.obj");
   if (!a) return;
-  const dg::BoundingBox exemplar = a->prepared.model.mesh.bounds();
-  const double eps = a->prepared.surface.eps();
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    dg::ShapeDerivationOptions options;
-    options.seed = seed;
-    const dg::ShapeDerivation variant = dg::derive_shape(a->grammar, eps, options);
-    const dg::BoundingBox box = variant.mesh.bounds();
-    INFO("seed " << seed);
-    CHECK((box.min - exemplar.min).norm() < eps);
-    CHECK((box.max - exemplar.max).norm() < eps);
-  }
+  check_derivations_stay_in_place(*a);
 }
 
 TEST_CASE("grid rules, docking sites and context-free rules report their progress in order and can be cancelled", "[grammar][progress]") {
