@@ -1053,22 +1053,28 @@ class Builder {
       if (nodes_[i].first_production == kNoProduction) nodes_[i].kept = false;
     }
     // The axiom: of the roots' random independent sets whose pieces add up to the model, the
-    // one from which the most non-terminals can be reached (the first such in trial order).
-    // Without such a set, the whole model as one terminal (built only then: merging its flat
-    // faces costs as much as the model).
+    // one from which the most non-terminals can be reached, of those the one whose own
+    // productions (the exemplar rebuilt) name the most non-terminals (the first such in trial
+    // order): of two locations of a non-terminal whose swaps move the whole model, the one whose
+    // docker holds the sites below it (the Hochhaus Asemwald's slab with its windows), so that
+    // its variation stays in place once the other's alternative goes. Without such a set, the
+    // whole model as one terminal (built only then: merging its flat faces costs as much as the
+    // model).
     const UnfoldedChildren roots = unfolded(kept_only(roots_));
-    std::size_t most_reached = 0;
+    std::size_t most_reached = 0, most_rebuilt = 0;
     for (const auto& set : random_independent_sets(roots, options_.independent_set_trials, random)) {
       std::vector<std::size_t> starts;
       for (std::size_t c : set) starts.push_back(class_index_[nodes_[c].klass]);
       const std::vector<char> reachable = reachable_nonterminals(grammar, starts);
       const auto reached = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), 1));
-      if (reached <= most_reached) continue;
+      const std::size_t rebuilt = nonterminals_rebuilt(grammar, set);
+      if (reached == 0 || reached < most_reached || (reached == most_reached && rebuilt <= most_rebuilt)) continue;
       ShapeProduction axiom = production(kNone, set);
       if (!adds_up(axiom, set, cloud_ ? static_cast<double>(cloud_->positions.size()) : mesh_.area()) || opens_holes(axiom))
         continue;
       grammar.axiom = std::move(axiom);
       most_reached = reached;
+      most_rebuilt = rebuilt;
     }
     if (most_reached == 0) grammar.axiom = production(kNone, {});
     if (opens_holes(grammar.axiom)) {  // even the exemplar rebuilt from its pieces would have holes
@@ -1079,6 +1085,24 @@ class Builder {
       stats.productions_moving_the_model =
           drop_alternatives_moving_the_model(grammar, swap_motions(grammar.nonterminals.size()));
     stats.unreachable_nonterminals = drop_unreachable_nonterminals(grammar);
+  }
+
+  // How many non-terminals the exemplar's own productions name below the nodes `set`: their
+  // first productions, then the original productions of those productions' child slots.
+  std::size_t nonterminals_rebuilt(const ContextFreeGrammar& grammar, const std::vector<std::size_t>& set) const {
+    std::vector<char> named(grammar.nonterminals.size(), 0);
+    std::vector<std::size_t> pending;
+    for (std::size_t c : set) pending.push_back(nodes_[c].first_production);
+    std::vector<char> visited(grammar.productions.size(), 0);
+    while (!pending.empty()) {
+      const std::size_t p = pending.back();
+      pending.pop_back();
+      if (p >= grammar.productions.size() || visited[p]) continue;
+      visited[p] = 1;
+      named[grammar.productions[p].lhs] = 1;
+      for (const ChildSlot& slot : grammar.productions[p].children) pending.push_back(slot.original_production);
+    }
+    return static_cast<std::size_t>(std::count(named.begin(), named.end(), 1));
   }
 
   // Whether `motion` carries the rest of the model outside `from`'s docker and band onto the
