@@ -97,7 +97,7 @@ std::string unreachable_text(const ContextFreeStats& stats) {
 
 // "N production(s) were dropped because ..." for alternatives that would only move the model.
 std::string moving_text(const ContextFreeStats& stats) {
-  return fmt::format("{} production(s) were dropped because putting one at another site of its non-terminal only moves "
+  return fmt::format("{} production(s) were dropped because putting one at another site of its non-terminal moves "
                      "the whole model (the rest of the model around each of those sites is the same, moved)",
                      stats.productions_moving_the_model);
 }
