@@ -120,10 +120,11 @@ enum class SwapMotion : char {
 // Drops the productions of non-terminals whose swaps move the model that rebuild no slot of the
 // exemplar (no slot names them as their original production): children come along with the
 // docker they lie in, so the result is the exemplar moved. When the motion keeps the model on
-// its own bounding box, an alternative whose children recurse or vary is kept (the Hochhaus
-// Asemwald turned about its middle: its slab still grows by segments); when it moves the model
-// off it, none is (the Quaternius bank's variants were the bank shifted by (339.2, 0, -54)).
-// Renumbers the rest (keep_rules). Returns how many went.
+// its own bounding box (a half turn about its middle), an alternative whose children recurse or
+// vary is kept; when it moves the model off it, none is (the Quaternius bank's and the Hochhaus
+// Asemwald's variants were the model shifted by (339.2, 0, -54) and (-73, 0, 2.3)); the axiom
+// takes the location whose own productions hold the choices below it. Renumbers the rest
+// (keep_rules). Returns how many went.
 std::size_t drop_alternatives_moving_the_model(ContextFreeGrammar& grammar, const std::vector<SwapMotion>& swaps) {
   std::vector<char> named(grammar.productions.size(), 0);
   auto mark = [&](const ShapeProduction& p) {
