@@ -1068,8 +1068,9 @@ class Builder {
       for (std::size_t c : set) starts.push_back(class_index_[nodes_[c].klass]);
       const std::vector<char> reachable = reachable_nonterminals(grammar, starts);
       const auto reached = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), 1));
+      if (reached == 0 || reached < most_reached) continue;
       const std::size_t rebuilt = nonterminals_rebuilt(grammar, set);
-      if (reached == 0 || reached < most_reached || (reached == most_reached && rebuilt <= most_rebuilt)) continue;
+      if (reached == most_reached && rebuilt <= most_rebuilt) continue;
       ShapeProduction axiom = production(kNone, set);
       if (!adds_up(axiom, set, cloud_ ? static_cast<double>(cloud_->positions.size()) : mesh_.area()) || opens_holes(axiom))
         continue;

@@ -56,6 +56,12 @@ void require_tiles_comb(const std::vector<Vec3>& positions, const std::vector<dg
   CHECK(area == Approx(comb_area).epsilon(1e-12));
 }
 
+// A triangle's height over its longest side (model units): about zero for a needle.
+double height_over_longest_side(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  return (b - a).cross(c - a).norm() / longest;
+}
+
 std::set<std::multiset<std::uint32_t>> corner_sets(const std::vector<dg::Triangle>& triangles) {
   std::set<std::multiset<std::uint32_t>> sets;
   for (const dg::Triangle& t : triangles) sets.insert({t[0], t[1], t[2]});
@@ -150,9 +156,8 @@ TEST_CASE("polygon triangulation: corners a rounding's width off a straight edge
   REQUIRE(triangles.size() == corners.size() - 2);
   for (const dg::Triangle& t : triangles) {
     const Vec3 a = positions[t[0]], b = positions[t[1]], c = positions[t[2]];
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     INFO("triangle " << a.transpose() << " / " << b.transpose() << " / " << c.transpose());
-    CHECK((b - a).cross(c - a).norm() / longest > 1e-3);  // its height over its longest side: no needle
+    CHECK(height_over_longest_side(a, b, c) > 1e-3);  // no needle
   }
 }
 
@@ -173,9 +178,7 @@ TEST_CASE("corpus: the Quaternius bank's notched floors and ceilings triangulate
     const auto [a, b, c] = mesh.corners(t);
     if (std::max({a.y(), b.y(), c.y()}) - std::min({a.y(), b.y(), c.y()}) > 1e-3) continue;
     ++horizontal;
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const double height = (b - a).cross(c - a).norm() / longest;
-    if (height < 1e-6 * extent) ++needles;
+    if (height_over_longest_side(a, b, c) < 1e-6 * extent) ++needles;
   }
   CHECK(horizontal > 500);
   CHECK(needles == 0);

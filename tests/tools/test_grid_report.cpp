@@ -12,6 +12,22 @@
 #include <iterator>
 #include <string>
 
+namespace {
+
+// Writes `mesh` as NAME.obj in a fresh folder, runs `analyze` on it and returns NAME.report.md.
+std::string analyze_report(const dg::TriangleMesh& mesh, const std::string& name) {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report-" + name);
+  const std::filesystem::path model = folder / (name + ".obj");
+  dg::write_mesh(model, mesh);
+  const dg::test::CliRun run = dg::test::run_cli("analyze " + model.string() + " -q -o " + folder.string(), folder);
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  std::ifstream in(folder / (name + ".report.md"));
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
 TEST_CASE("analyze: with no grid, the report names the strongest repeating translation and why it gave none",
           "[tools][grids]") {
   // Two equal boxes, 2 apart, above a sphere: the translation maps one box onto the other, but
@@ -19,13 +35,7 @@ TEST_CASE("analyze: with no grid, the report names the strongest repeating trans
   dg::TriangleMesh mesh = dg::test::make_sphere(dg::Vec3(0.0, 0.0, -2.0), 2.5, 24, 48);
   dg::test::append(mesh, dg::test::make_box(dg::Vec3(-1.5, -0.5, 1.0), dg::Vec3(-0.5, 0.5, 2.0)));
   dg::test::append(mesh, dg::test::make_box(dg::Vec3(0.5, -0.5, 1.0), dg::Vec3(1.5, 0.5, 2.0)));
-  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report");
-  dg::write_mesh(folder / "boxes.obj", mesh);
-  const dg::test::CliRun run = dg::test::run_cli("analyze " + (folder / "boxes.obj").string() + " -q -o " + folder.string(), folder);
-  INFO(run.output);
-  REQUIRE(run.status == 0);
-  std::ifstream in(folder / "boxes.report.md");
-  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string report = analyze_report(mesh, "boxes");
   INFO(report);
   CHECK(report.find("No grid found") != std::string::npos);
   const std::size_t named = report.find("The repeating translation with the most r-symmetric area is");
@@ -44,13 +54,7 @@ TEST_CASE("analyze: with no grid, the report's grid section names the translatio
     const double x = -3.5 + 2.0 * i;
     dg::test::append(mesh, dg::test::make_box(dg::Vec3(x, -0.5, 1.5), dg::Vec3(x + 1.0, 0.5, 2.5)));
   }
-  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report-repeats");
-  dg::write_mesh(folder / "row.obj", mesh);
-  const dg::test::CliRun run = dg::test::run_cli("analyze " + (folder / "row.obj").string() + " -q -o " + folder.string(), folder);
-  INFO(run.output);
-  REQUIRE(run.status == 0);
-  std::ifstream in(folder / "row.report.md");
-  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string report = analyze_report(mesh, "row");
   INFO(report);
   const std::size_t grids = report.find("## Grid rules");
   REQUIRE(grids != std::string::npos);

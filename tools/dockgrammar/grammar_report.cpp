@@ -563,11 +563,14 @@ void write_analysis_report(const AnalysisReport& report) {
   md += "```\n\n";
   if (const std::string unverified = unverified_candidates_text(report.symmetries); !unverified.empty()) md += unverified + "\n";
   md += "## Grid rules\n\n";
-  if (const std::string unused = translations_without_grid_text(report); report.grammar.grids.empty() && !unused.empty())
-    md += fmt::format("No grid found. Repeating, but without a grid: {}; \"Not yet built\" below says why.\n\n", unused);
-  else if (report.grammar.grids.empty())
-    md += "No grid found (no translation or screw motion with at least two units whose cut planes cross only r-symmetric "
-          "area).\n\n";
+  if (report.grammar.grids.empty()) {
+    const std::string unused = translations_without_grid_text(report);
+    md += unused.empty() ? "No grid found (no translation or screw motion with at least two units whose cut planes cross "
+                           "only r-symmetric area).\n\n"
+                         : fmt::format("No grid found. Repeating, but without a grid: {}; \"Not yet built\" below says "
+                                       "why.\n\n",
+                                       unused);
+  }
   md += strongest_translation_text(report);
   if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   if (const std::string hint = material_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
