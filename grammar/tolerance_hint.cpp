@@ -25,13 +25,17 @@ std::optional<ToleranceHint> tolerance_hint(const PreparedModel& prepared, const
   const VoxelSurface& surface = prepared.surface;
   const double total = surface.total_area();
   if (!best || total <= 0.0) return std::nullopt;
-  RegionOptions wider = symmetries.region;
-  wider.offset_tolerance_eps = kSuggestedToleranceEps;
   hint.r_symmetric_now =
       tested_symmetric_region(CellMatcher(surface, nullptr, symmetries.region), surface, best->transform).r_symmetric_area / total;
-  hint.r_symmetric_wider = tested_symmetric_region(CellMatcher(surface, nullptr, wider), surface, best->transform).r_symmetric_area / total;
-  if (hint.r_symmetric_wider < hint.r_symmetric_now + 0.05) return std::nullopt;
-  return hint;
+  for (double tolerance : kSuggestedTolerancesEps) {
+    RegionOptions wider = symmetries.region;
+    wider.offset_tolerance_eps = tolerance;
+    hint.tolerance_eps = tolerance;
+    hint.r_symmetric_wider =
+        tested_symmetric_region(CellMatcher(surface, nullptr, wider), surface, best->transform).r_symmetric_area / total;
+    if (hint.r_symmetric_wider >= hint.r_symmetric_now + 0.05) return hint;
+  }
+  return std::nullopt;
 }
 
 }  // namespace dg

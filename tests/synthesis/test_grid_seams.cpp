@@ -93,6 +93,7 @@ TEST_CASE("corpus: the Scopia iron railing gives its 9 frames at a tolerance of 
   REQUIRE(hint.has_value());
   CHECK(hint->repeats >= 18);
   CHECK(hint->grid_units == frames(exact)->directions[0].count);
+  CHECK(hint->tolerance_eps == 0.25);
   CHECK(hint->r_symmetric_wider > hint->r_symmetric_now + 0.2);
 
   dg::SymmetryOptions tolerant;
@@ -116,6 +117,34 @@ TEST_CASE("corpus: the Scopia iron railing gives its 9 frames at a tolerance of 
   CHECK(loose.boundary_edges > exemplar_open + 100);
   CHECK(welded.boundary_edges <= exemplar_open);
   CHECK(welded.non_manifold_edges == 0);
+}
+
+TEST_CASE("corpus: the Quaternius bank's colonnade hint suggests half an eps, which gives its grid",
+          "[synthesis][grid][corpus]") {
+  const std::optional<std::filesystem::path> bank = dg::test::corpus_file_if_present("meshes/arch-quaternius-bank/bank.obj");
+  if (!bank) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*bank);
+  const dg::SymmetryResult exact = dg::detect_symmetries(prepared);
+  REQUIRE(dg::find_grids(prepared, exact).empty());
+  // The columns stand about 54 apart along both colonnades, but splay: the pitch is 53.99 at
+  // the bases and 54.81 at the abaci (0.48 eps more). A quarter eps adds under 5 % of the
+  // surface, half an eps about 9 %.
+  const std::optional<dg::ToleranceHint> hint = dg::tolerance_hint(prepared, exact, {});
+  REQUIRE(hint.has_value());
+  CHECK(hint->tolerance_eps == 0.5);
+  CHECK(hint->grid_units == 0);
+  const dg::SymmetryFamily& colonnade = exact.families[hint->family];
+  CHECK(colonnade.kind == "translation");
+  CHECK(std::abs(colonnade.generator.translation.norm() - 54.0) < 1.0);
+  CHECK(hint->r_symmetric_wider > hint->r_symmetric_now + 0.05);
+
+  dg::SymmetryOptions tolerant;
+  tolerant.region.offset_tolerance_eps = hint->tolerance_eps;
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared, tolerant));
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  CHECK(std::abs(grids[0].directions[0].translation.norm() - 54.0) < 1.0);
+  CHECK(grids[0].directions[0].count >= 3);
 }
 
 TEST_CASE("corpus: no tolerance hint for the Blendswap radiator whose fins differ in shape", "[synthesis][grid][corpus]") {

@@ -421,11 +421,12 @@ std::string tolerance_hint_text(const AnalysisReport& report, std::string_view q
   const ToleranceHint& hint = *report.tolerance_hint;
   return fmt::format(
       "translation F{} repeats {} times, but {}; its repeats differ a little: at {}--tolerance {}{} its r-symmetric area "
-      "grows from {:.1f} % to {:.1f} % of the surface, which may give more units",
+      "grows from {:.1f} % to {:.1f} % of the surface, which may give {}",
       hint.family + 1, hint.repeats,
       hint.grid_units == 0 ? std::string("no grid was found")
                            : fmt::format("no grid has more than {} unit{}", hint.grid_units, hint.grid_units == 1 ? "" : "s"),
-      quote, kSuggestedToleranceEps, quote, 100.0 * hint.r_symmetric_now, 100.0 * hint.r_symmetric_wider);
+      quote, hint.tolerance_eps, quote, 100.0 * hint.r_symmetric_now, 100.0 * hint.r_symmetric_wider,
+      hint.grid_units == 0 ? "a grid" : "more units");
 }
 
 }  // namespace
