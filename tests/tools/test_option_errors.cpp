@@ -28,12 +28,45 @@ TEST_CASE("options: negative, infinite and oversized numbers are usage errors wi
 
   const dg::test::CliRun no_tolerance = run("symmetry " + model + " -q --tolerance 0");
   CHECK(no_tolerance.status == 2);
-  CHECK(no_tolerance.output.find("--tolerance: Value 0 not in range") != std::string::npos);
+  CHECK(no_tolerance.output.find("--tolerance: expected a number from 0.01 to 1, got '0'") != std::string::npos);
 
   // A voxel larger than the radius leaves no r-neighbourhood to compare.
   const dg::test::CliRun coarse = run("analyze " + model + " -q -r 0.1 --voxel 0.5 -o " + (folder / "out").string());
   CHECK(coarse.status == 2);
   CHECK(coarse.output.find("voxel size 0.5 is larger than the radius r = 0.1") != std::string::npos);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("options: words, signs and overflow where a whole number belongs, and unknown commands, are one clear error",
+          "[tools]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-usage-errors-test");
+  const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj";
+  auto run = [&](const std::string& arguments) { return dg::test::run_cli(arguments, folder); };
+  // Each message starts with the program's name and points to the help of the command in use.
+  auto says = [](const dg::test::CliRun& result, const std::string& message, const std::string& help) {
+    CAPTURE(result.output);
+    CHECK(result.status == 2);
+    CHECK(result.output.starts_with("dockgrammar: "));
+    CHECK(result.output.find(message) != std::string::npos);
+    CHECK(result.output.find("Run '" + help + "'") != std::string::npos);
+  };
+  says(run("analyze " + model + " -q --seed abc"), "--seed: expected a whole number 0 or more, got 'abc'",
+       "dockgrammar analyze --help");
+  // strtoull would read -1 as 2^64 - 1, and 2^64 as 2^64 - 1 too.
+  says(run("analyze " + model + " -q --seed -1"), "--seed: expected a whole number 0 or more, got '-1'",
+       "dockgrammar analyze --help");
+  says(run("analyze " + model + " -q --seed 18446744073709551616"), "got '18446744073709551616'", "dockgrammar analyze --help");
+  says(run("generate nothing.grammar.json --count x -o out"), "--count: expected a whole number from 1 to 1000000, got 'x'",
+       "dockgrammar generate --help");
+  says(run("generate nothing.grammar.json --count 2.5 -o out"), "got '2.5'", "dockgrammar generate --help");
+  says(run("analyze " + model + " -q --threads 1.5"), "--threads: expected a whole number from 0 to 4096, got '1.5'",
+       "dockgrammar analyze --help");
+  says(run("lsystem derive plant.ls -o plant.png --size 8"), "", "dockgrammar lsystem derive --help");
+  says(run("analyse " + model), "unknown command 'analyse' (commands: info, analyze,", "dockgrammar --help");
+  says(run(""), "no command given (commands: info, analyze,", "dockgrammar --help");
+  // The largest seed is a seed.
+  const dg::test::CliRun largest = run("analyze " + model + " -q --seed 18446744073709551615 -o " + (folder / "out").string());
+  CHECK(largest.status == 0);
   std::filesystem::remove_all(folder);
 }
 

@@ -10,6 +10,7 @@
 #include "assets/generator/asset.h"
 #include "assets/generator/committed_instances.h"
 #include "geometry/errors.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -48,14 +49,14 @@ int run(int argc, char** argv) {
   double noise = 0.0;
   app.add_option("name", name, "model name (see --list)");
   app.add_option("--param", param_items, "model parameter key=value (repeatable)");
-  app.add_option("--detail", detail, "tessellation detail K >= 1 (triangles grow with K^2)")->check(CLI::Range(1, 1000));
-  app.add_option("--target-triangles", target, "choose the detail that comes closest to N triangles")->check(CLI::PositiveNumber);
+  app.add_option("--detail", detail, "tessellation detail K >= 1 (triangles grow with K^2)")->check(dg::cli::number_in(1, 1000));
+  app.add_option("--target-triangles", target, "choose the detail that comes closest to N triangles")->check(dg::cli::number_in(std::size_t{1}, std::numeric_limits<std::size_t>::max()));
   app.add_option("-o,--output", output, "output mesh file (NAME) or folder (--all)");
   app.add_option("--points", points, "write a point cloud of N points drawn on the surface (PLY) instead of the mesh")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
-  app.add_option("--seed", seed, "seed of the drawn points (with --points)")->capture_default_str();
+      ->check(dg::cli::number_in(std::size_t{1}, std::size_t{100'000'000}));
+  app.add_option("--seed", seed, "seed of the drawn points (with --points)")->capture_default_str()->check(dg::cli::seed_number());
   app.add_option("--noise", noise, "with --points: Gaussian noise of this standard deviation per axis, model units")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(dg::cli::number_in(0.0, 1e6));
   app.add_flag("--list", list, "print the model names");
   app.add_flag("--all", all, "write the committed small instances into the folder given by -o");
   try {

@@ -6,6 +6,7 @@
 #include "tools/dockgrammar/model_options.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/pictures.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/stopwatch.h"
 #include "grammar/context_free.h"
@@ -42,11 +43,11 @@ void add_analyze_command(CLI::App& app) {
       ->add_option("--site-symmetries", options->site_symmetries,
                    "Symmetries whose motions give docking sites, one per repetition family, largest r-symmetric area "
                    "first; more lets motions of small parts (one branch level onto the next) give context-free rules")
-      ->check(CLI::Range(std::size_t(1), std::size_t(10000)))
+      ->check(number_in(std::size_t(1), std::size_t(10000)))
       ->capture_default_str();
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
-      ->capture_default_str();
+      ->capture_default_str()->check(seed_number());
   add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y; stored in the grammar file for generate");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);

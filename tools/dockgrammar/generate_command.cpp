@@ -53,21 +53,23 @@ void add_generate_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "generate", "Write random variants of a grammar (random context-free derivations, or random grid counts) plus DIR/manifest.json");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze")->required();
-  command->add_option("--count", options->count, "Number of variants")->capture_default_str()->check(CLI::Range(1, 1000000));
-  command->add_option("--seed", options->seed, "Seed of the batch; variant i depends only on (grammar, seed, i)")->capture_default_str();
-  command->add_option("--first", options->first, "Index of the first variant (to split a batch across machines)")->capture_default_str();
+  command->add_option("--count", options->count, "Number of variants")->capture_default_str()->check(number_in(1, 1000000));
+  command->add_option("--seed", options->seed, "Seed of the batch; variant i depends only on (grammar, seed, i)")->capture_default_str()->check(seed_number());
+  command->add_option("--first", options->first, "Index of the first variant (to split a batch across machines)")
+      ->capture_default_str()
+      ->check(number_in<std::uint64_t>(0, 1'000'000'000'000));
   command->add_option("-o,--output", options->output, "Output folder")->required();
   command->add_option("--format", options->format, "obj, ply or glb (default: obj; ply for a grammar made from a point cloud)")
       ->check(CLI::IsMember({"obj", "ply", "glb"}));
   command->add_option("--range-factor", options->range_factor, "Counts are drawn from [count / F, count * F]")
       ->capture_default_str()
-      ->check(CLI::Range(1.0, 100.0));
+      ->check(number_in(1.0, 100.0));
   command->add_option("--rules", options->rules, "auto (context-free rules when they can change the exemplar under --orientation, else the grid; neither is an error), grid or context-free (with no choice: rebuilds the exemplar)")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "grid", "context-free"}));
   command->add_option("--max-depth", options->max_depth, "Context-free: deeper slots get the exemplar's production")
       ->capture_default_str()
-      ->check(CLI::Range(0, 10000));
+      ->check(number_in(0, 10000));
   command->add_option("--max-triangles", options->max_triangles,
                       "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's production")
       ->capture_default_str();
@@ -76,11 +78,11 @@ void add_generate_command(CLI::App& app) {
                    "Context-free: every variant keeps at least this fraction of the exemplar's size (surface area; points "
                    "for a point-cloud grammar); productions that would leave less are not drawn")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   command
       ->add_option("--max-size", options->max_size,
                    "Context-free: no variant grows past this multiple of the exemplar's size (default: no limit)")
-      ->check(CLI::Range(1.0, 1e9));
+      ->check(number_in(1.0, 1e9));
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
       ->check(non_negative_number());
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");

@@ -2,6 +2,7 @@
 // linked guides (Beneš et al. 2011), with optional incremental regrowth after guide edits.
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
@@ -154,16 +155,16 @@ void add_grow_command(CLI::App& app) {
   grow_command->add_option("SCENE", options->scene, "scene file (JSON)")->required()->check(CLI::ExistingFile);
   grow_command->add_option("-o,--output", options->output, "picture to write: OUT.svg or OUT.png")->required();
   grow_command->add_option("--seed", options->seed, "seed of stochastic rules; the same seed gives the same picture")
-      ->capture_default_str();
+      ->capture_default_str()->check(seed_number());
   grow_command->add_option("--edit", options->edits,
                            "edits (JSON) applied after growing; only the changed guides and their dependents regrow")
       ->check(CLI::ExistingFile);
   grow_command->add_option("--size", options->size, "pixels along the longer side (SVG: its width or height)")
       ->capture_default_str()
-      ->check(CLI::Range(16, 16384));
+      ->check(number_in(16, 16384));
   grow_command->add_option("--line-width", options->line_width, "line width in PNG pixels")
       ->capture_default_str()
-      ->check(CLI::Range(0.1, 100.0));
+      ->check(number_in(0.1, 100.0));
   grow_command->add_flag("--json", options->json,
                          "print element counts per guide, tokens used and times as JSON on stdout");
   grow_command->callback([options] { run_grow(*options); });

@@ -2,6 +2,7 @@
 // operations of Št'ava et al. 2010 §6 (more iterations, randomization, symbol replacement).
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
@@ -149,29 +150,29 @@ void add_lsystem_command(CLI::App& app) {
   derive_command->add_option("-o,--output", derive_options->output, "picture to write: OUT.svg or OUT.png")->required();
   derive_command->add_option("-n,--iterations", derive_options->iterations,
                              "derivation steps (default: the file's 'iterations', else rewrite until nothing applies)")
-      ->check(CLI::Range(0, 1000000));
+      ->check(number_in(0, 1000000));
   derive_command->add_option("--seed", derive_options->seed,
                              "seed for stochastic rules and jitter; the same seed gives the same picture")
-      ->capture_default_str();
+      ->capture_default_str()->check(seed_number());
   derive_command->add_option("--jitter-angle", derive_options->jitter_angle,
                              "randomize every turn by up to +-DEG degrees")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(number_in(0.0, 180.0));
   derive_command->add_option("--jitter-scale", derive_options->jitter_scale,
                              "randomize every length, scale factor and motif size by up to +-F (0.1 = 10%)")
-      ->check(CLI::Range(0.0, 0.99));
+      ->check(number_in(0.0, 0.99));
   derive_command->add_option("--replace", derive_options->replacements,
                              "replace symbol A by B in the axiom and all successors, e.g. P2=A (repeat the option for more)")
       ->allow_extra_args(false);
   derive_command->add_option("--max-modules", derive_options->max_modules,
                              "stop with an error when the derived string grows beyond N modules")
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40));
+      ->check(number_in(std::size_t{1}, std::size_t{1} << 40));
   derive_command->add_option("--size", derive_options->size, "PNG: pixels along the longer side")
       ->capture_default_str()
-      ->check(CLI::Range(16, 16384));
+      ->check(number_in(16, 16384));
   derive_command->add_option("--line-width", derive_options->line_width, "line width in PNG pixels")
       ->capture_default_str()
-      ->check(CLI::Range(0.1, 100.0));
+      ->check(number_in(0.1, 100.0));
   derive_command->add_flag("--json", derive_options->json, "print a machine-readable summary on stdout");
   derive_command->callback([derive_options] { run_derive(*derive_options); });
 

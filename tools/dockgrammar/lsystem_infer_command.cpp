@@ -2,6 +2,7 @@
 // pixel image (Št'ava et al. 2010, Guo et al. 2020), print it and write it.
 
 #include "tools/dockgrammar/commands.h"
+#include "tools/dockgrammar/number_checks.h"
 
 #include "geometry/atomic_file.h"
 #include "geometry/errors.h"
@@ -119,17 +120,17 @@ void add_lsystem_infer_subcommand(CLI::App& lsystem) {
   command->add_option("-o,--output", options->output, "write the L-system here: OUT.ls (text form) or OUT.json");
   command->add_flag("--json", options->json, "print the JSON form with grammar_length, start_svg and timings_s");
   ImportanceWeights& w = options->inference.vector.clusters.weights;
-  command->add_option("--w-n", w.w_n, "importance weight of the number of absorbed elements")->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  command->add_option("--w-h", w.w_h, "importance weight of proximity (merge neighbours first)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  command->add_option("--w-phi", w.w_phi, "importance weight of element similarity")->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  command->add_option("--w-l", w.w_l, "importance weight of sequence length")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_option("--w-n", w.w_n, "importance weight of the number of absorbed elements")->capture_default_str()->check(number_in(0.0, 1.0));
+  command->add_option("--w-h", w.w_h, "importance weight of proximity (merge neighbours first)")->capture_default_str()->check(number_in(0.0, 1.0));
+  command->add_option("--w-phi", w.w_phi, "importance weight of element similarity")->capture_default_str()->check(number_in(0.0, 1.0));
+  command->add_option("--w-l", w.w_l, "importance weight of sequence length")->capture_default_str()->check(number_in(0.0, 1.0));
   command->add_option("--generalize", options->generalize_w0,
                       "merge similar rules into stochastic ones (Guo et al. 2020 §4.3) with weight W0 in [0, 1] of the length change "
                       "against the edit distance")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   command->add_option("--similarity", options->inference.vector.similarity.threshold, "element similarity threshold")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   command->callback([options] { run_infer(*options); });
 }
 

@@ -20,7 +20,7 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
       ->check(non_negative_number());
   command.add_option("--sharp-angle", options.prepare.sharp_angle_degrees,
                      "Dihedral angle in degrees above which an edge is a feature edge")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(number_in(0.0, 180.0))
       ->capture_default_str();
   command.add_flag("--match-materials", options.prepare.match_materials,
                    "Symmetries must also map each material onto itself; material borders count as feature lines "
@@ -31,7 +31,7 @@ void add_model_options(CLI::App& command, ModelOptions& options) {
                   "(repeat for more groups; implies --match-materials), e.g. 'glass*,blind1,blind2' for window "
                   "tints chosen at random")
       ->allow_extra_args(false);
-  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(non_negative_number());
+  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(number_in(0, 4096));
   command.add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command.add_flag("--json", options.json, "Print machine-readable results on stdout");
 }
@@ -42,14 +42,14 @@ void add_search_options(CLI::App& command, SearchOptions& options) {
                   "How far apart, in voxels (eps), mapped geometry may lie from its image and still count as a "
                   "copy: the default suits exact repeats; 0.2-0.3 finds repeats that were placed or modelled "
                   "a little unevenly (bars of a hand-made railing); larger values start to merge different shapes")
-      ->check(CLI::Range(0.01, 1.0))
+      ->check(number_in(0.01, 1.0))
       ->capture_default_str();
   command
       .add_option("--candidates", options.candidates,
                   "Symmetry candidates verified on the voxel surface, those whose feature-line ends agree most "
                   "often first; more finds motions of small parts among many repeats (each costs about as much "
                   "as one of the default ones; the report says how many went unverified)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
+      ->check(number_in(std::size_t(1), std::size_t(100000)))
       ->capture_default_str();
 }
 

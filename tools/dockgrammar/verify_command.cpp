@@ -38,10 +38,10 @@ void add_verify_command(CLI::App& app) {
   command->add_option("--samples", options->verify.similarity.samples, "Test points on the candidate")
       ->check(positive_number())
       ->capture_default_str();
-  command->add_option("--seed", options->verify.similarity.seed, "Seed of the test points")->capture_default_str();
+  command->add_option("--seed", options->verify.similarity.seed, "Seed of the test points")->capture_default_str()->check(seed_number());
   command->add_option("--min-fraction", options->verify.min_similar_fraction,
                       "Smallest r-similar fraction that passes")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(number_in(0.0, 1.0))
       ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(non_negative_number());
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
