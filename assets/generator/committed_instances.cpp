@@ -2,6 +2,7 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/model_io.h"
+#include "geometry/submesh.h"
 #include "geometry/surface_sampling.h"
 
 namespace dg::assets {
@@ -18,16 +19,25 @@ std::vector<Instance> committed_instances() {
           {"messy_facade_3x4", "messy_facade", {{"columns", 3}, {"rows", 4}}}};
 }
 
-std::string ground_truth_text(const Asset& asset) { return asset.ground_truth.dump(2) + "\n"; }
-
 std::filesystem::path ground_truth_path(const std::filesystem::path& mesh_path) {
   std::filesystem::path path = mesh_path;
   return path.replace_extension(".json");
 }
 
 void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_path) {
-  write_mesh(mesh_path, asset.mesh);
-  const std::string text = ground_truth_text(asset);
+  nlohmann::json truth = asset.ground_truth;
+  if (lower_extension(mesh_path) == ".glb") {
+    // glTF's up axis is +y: the generator's up axis +z is turned onto it (and +y onto -z).
+    RigidTransform z_up_to_y_up;
+    z_up_to_y_up.rotation << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+    write_mesh(mesh_path, transformed(asset.mesh, z_up_to_y_up));
+    truth["file_frame"] =
+        "the .glb holds the model turned so that its up axis z is glTF's +y: a point (x, y, z) of the values here lies "
+        "at (x, z, -y) in the file";
+  } else {
+    write_mesh(mesh_path, asset.mesh);
+  }
+  const std::string text = truth.dump(2) + "\n";
   write_file_atomically(ground_truth_path(mesh_path), [&](std::ostream& out) { out << text; }, false);
 }
 

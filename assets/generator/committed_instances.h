@@ -20,14 +20,13 @@ struct Instance {
 /// The instances `dockgrammar-assets --all` writes, in a fixed order.
 std::vector<Instance> committed_instances();
 
-/// The ground-truth file text: the JSON indented by 2, with a final newline.
-std::string ground_truth_text(const Asset& asset);
-
 /// Path of the ground-truth file of a mesh file: same folder and stem, extension ".json".
 std::filesystem::path ground_truth_path(const std::filesystem::path& mesh_path);
 
 /// Writes the mesh to `mesh_path` (format by extension, via write_mesh) and the ground truth
-/// next to it, both atomically. Throws InputError for an unwritable path or unknown format.
+/// next to it, both atomically. A .glb is turned to glTF's y-up frame, (x, y, z) -> (x, z, -y),
+/// and its ground truth (values in the generator's z-up frame) says so under "file_frame".
+/// Throws InputError for an unwritable path or unknown format.
 void write_asset_files(const Asset& asset, const std::filesystem::path& mesh_path);
 
 /// Writes a scan-like point cloud of the asset to `ply_path` (`count` points drawn area-uniformly

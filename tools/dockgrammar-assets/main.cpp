@@ -10,6 +10,7 @@
 #include "assets/generator/asset.h"
 #include "assets/generator/committed_instances.h"
 #include "geometry/errors.h"
+#include "geometry/model_io.h"
 #include "tools/dockgrammar/number_checks.h"
 
 #include <CLI/CLI.hpp>
@@ -103,7 +104,11 @@ int run(int argc, char** argv) {
   dg::assets::write_asset_files(asset, output);
   std::cout << fmt::format("{}: {} triangles -> {} and {}\n", asset.name, asset.mesh.triangles.size(), output.string(),
                            dg::assets::ground_truth_path(output).string());
-  std::cout << fmt::format("z is up (most OBJ readers assume y): dockgrammar analyze {} --up z\n", output.string());
+  if (dg::lower_extension(output) == ".glb")
+    std::cout << fmt::format("turned to glTF's y-up (the JSON keeps the generator's z-up values): dockgrammar analyze {}\n",
+                             output.string());
+  else
+    std::cout << fmt::format("z is up (most OBJ readers assume y): dockgrammar analyze {} --up z\n", output.string());
   return 0;
 }
 
