@@ -4,6 +4,7 @@
 #include "geometry/errors.h"
 #include "geometry/model_io.h"
 #include "geometry/submesh.h"
+#include "grammar/grid_cut.h"
 #include "grammar/material_json.h"
 
 #include <fmt/format.h>

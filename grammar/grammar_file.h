@@ -3,6 +3,7 @@
 // sidecar piece meshes (binary PLY) in a folder next to it. Documented in docs/grammar-file.md.
 
 #include "grammar/context_free.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 #include "grammar/grid_seams.h"
 
 #include "geometry/topology.h"
+#include "grammar/grid_cut.h"
 
 #include <algorithm>
 #include <cmath>

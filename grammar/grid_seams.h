@@ -5,6 +5,7 @@
 // float rounding; repeats matched within a wider tolerance (`--tolerance`) meet only that closely,
 // and resize welds their seams within twice the distance measured here.
 
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "grammar/seam_curve.h"
 

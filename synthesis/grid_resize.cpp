@@ -4,6 +4,7 @@
 #include "geometry/flat_faces.h"
 #include "geometry/submesh.h"
 #include "geometry/t_junctions.h"
+#include "grammar/grid_cut.h"
 #include "grammar/seam_curve.h"
 
 #include <fmt/format.h>

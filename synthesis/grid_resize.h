@@ -3,6 +3,7 @@
 // the end, in every direction of the grid (corners once, borders along one direction, the
 // interior along all), welded into one mesh.
 
+#include "grammar/grid_cut.h"
 #include "grammar/grid_seams.h"
 
 #include <vector>

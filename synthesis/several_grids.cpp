@@ -1,6 +1,7 @@
 #include "synthesis/several_grids.h"
 
 #include "geometry/errors.h"
+#include "grammar/grid_cut.h"
 #include "synthesis/grid_resize.h"
 
 #include <fmt/format.h>

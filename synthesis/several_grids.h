@@ -2,6 +2,7 @@
 // Resizing several grids of one grammar in one model, one grid after the other.
 
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 
 #include <vector>
 

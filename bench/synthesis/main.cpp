@@ -9,6 +9,7 @@
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "geometry/surface_sampling.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "synthesis/grid_resize.h"
 #include "synthesis/shape_derivation.h"

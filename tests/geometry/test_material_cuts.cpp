@@ -6,6 +6,7 @@
 #include "geometry/prepared_model.h"
 #include "geometry/slab_cut.h"
 #include "geometry/zone_cut.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "support/shapes.h"
 

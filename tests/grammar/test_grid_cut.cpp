@@ -1,6 +1,7 @@
 // Cutting a mesh into grid pieces: only the cut planes add vertices, and flat faces come back
 // as few triangles as the cells allow, so resized grids stay close to the exemplar's size.
 
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 
 #include "geometry/topology.h"

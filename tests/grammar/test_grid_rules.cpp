@@ -1,4 +1,5 @@
 #include "grammar/grid_rules.h"
+#include "grammar/grid_cut.h"
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"

@@ -2,6 +2,7 @@
 // keeps them: checked against the material fence's ground truth (tests/support/material_models.h).
 
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "grammar/material_json.h"
 #include "geometry/errors.h"
 #include "support/asset_grammar.h"

@@ -1,6 +1,7 @@
 #include "grammar/whole_parts.h"
 
 #include "geometry/model_io.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "support/cli_run.h"
 #include "support/corpus.h"

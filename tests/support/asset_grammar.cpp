@@ -3,6 +3,7 @@
 #include "assets/generator/asset.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_seams.h"
 
 namespace dg::test {

@@ -5,6 +5,7 @@
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
+#include "grammar/grid_cut.h"
 #include "support/mesh_distance.h"
 #include "support/shapes.h"
 

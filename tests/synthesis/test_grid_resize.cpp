@@ -5,6 +5,7 @@
 #include "geometry/errors.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"
 #include "support/shapes.h"

@@ -6,6 +6,7 @@
 
 #include "geometry/model_io.h"
 #include "geometry/topology.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "support/corpus.h"
 #include "support/mesh_distance.h"

@@ -6,6 +6,7 @@
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "support/cli_run.h"
 #include "support/corpus.h"
 #include "synthesis/grid_resize.h"

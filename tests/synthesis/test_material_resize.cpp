@@ -3,6 +3,7 @@
 
 #include "synthesis/grid_resize.h"
 
+#include "grammar/grid_cut.h"
 #include "support/asset_grammar.h"
 #include "support/material_models.h"
 

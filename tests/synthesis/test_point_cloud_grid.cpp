@@ -10,6 +10,7 @@
 #include "geometry/surface_sampling.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "support/cli_run.h"
 #include "support/corpus.h"
 #include "support/mesh_distance.h"

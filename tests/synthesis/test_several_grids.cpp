@@ -13,6 +13,7 @@
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"

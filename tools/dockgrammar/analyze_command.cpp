@@ -12,6 +12,7 @@
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
 #include "grammar/grammar_file.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "grammar/grid_seams.h"
 #include "grammar/material_hint.h"

@@ -5,6 +5,7 @@
 #include "geometry/model_io.h"
 #include "geometry/submesh.h"
 #include "geometry/topology.h"
+#include "grammar/grid_cut.h"
 #include "grammar/grid_seams.h"
 #include "grammar/seam_curve.h"
 #include "synthesis/shape_derivation.h"
