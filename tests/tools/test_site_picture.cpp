@@ -60,8 +60,10 @@ TEST_CASE("analyze: the docking-site picture shows insert and replace sites of a
   std::ifstream report(folder / "fence" / "fence_4.report.md");
   const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(text.find("Picture: `fence_4.sites.png`") != std::string::npos);
-  // Its context-free rules offer choices, and the report says what generate does with them.
-  CHECK(text.find("With these rules: generate makes random variants from them.") != std::string::npos);
+  // Its context-free rules offer choices, and the report says what generate does with them and
+  // how its grid is varied instead.
+  CHECK(text.find("With these rules: generate makes random variants from them; generate --rules grid draws the "
+                  "counts of grid1 instead, resize sets them.") != std::string::npos);
 
   // --json lists the pictures written, each on disk.
   const dg::test::CliRun json = dg::test::run_cli("analyze " + std::string(DOCKGRAMMAR_SOURCE_DIR) +

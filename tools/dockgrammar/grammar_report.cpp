@@ -259,7 +259,13 @@ nlohmann::json productions_json(const ContextFreeGrammar& g) {
 std::string generate_rules_text(const AnalysisReport& report) {
   ShapeDerivationOptions upright;
   upright.up = picture_options(exemplar_bounds(report.grammar), report.grammar.up_axis).camera.up.normalized();
-  if (derivation_has_choice(report.grammar.context_free, upright)) return "generate makes random variants from them";
+  if (derivation_has_choice(report.grammar.context_free, upright)) {
+    if (report.grammar.grids.empty()) return "generate makes random variants from them";
+    std::string grids;
+    for (const GridWithPieces& grid : report.grammar.grids) grids += (grids.empty() ? "" : ", ") + grid.rule.name;
+    return fmt::format("generate makes random variants from them; generate --rules grid draws the counts of {} "
+                       "instead, resize sets them", grids);
+  }
   if (!derivation_has_choice(report.grammar.context_free, ShapeDerivationOptions{}))
     return std::string("no non-terminal has a second production of another shape (its locations are copies of one "
                        "another") +
