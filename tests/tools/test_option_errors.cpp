@@ -24,7 +24,7 @@ TEST_CASE("options: negative, infinite and oversized numbers are usage errors wi
 
   const dg::test::CliRun zero_top = run("symmetry " + model + " -q --top 0");
   CHECK(zero_top.status == 2);
-  CHECK(zero_top.output.find("--top: must be greater than 0") != std::string::npos);
+  CHECK(zero_top.output.find("--top: expected a whole number from 1 to 100000, got '0'") != std::string::npos);
 
   const dg::test::CliRun no_tolerance = run("symmetry " + model + " -q --tolerance 0");
   CHECK(no_tolerance.status == 2);
@@ -61,6 +61,10 @@ TEST_CASE("options: words, signs and overflow where a whole number belongs, and 
   says(run("generate nothing.grammar.json --count 2.5 -o out"), "got '2.5'", "dockgrammar generate --help");
   says(run("analyze " + model + " -q --threads 1.5"), "--threads: expected a whole number from 0 to 4096, got '1.5'",
        "dockgrammar analyze --help");
+  says(run("generate nothing.grammar.json --max-triangles many -o out"),
+       "--max-triangles: expected a whole number from 1 to 1000000000, got 'many'", "dockgrammar generate --help");
+  says(run("verify " + model + " " + model + " --samples 2.5"), "--samples: expected a whole number from 1 to 100000000",
+       "dockgrammar verify --help");
   says(run("lsystem derive plant.ls -o plant.png --size 8"), "", "dockgrammar lsystem derive --help");
   says(run("analyse " + model), "unknown command 'analyse' (commands: info, analyze,", "dockgrammar --help");
   says(run(""), "no command given (commands: info, analyze,", "dockgrammar --help");

@@ -72,7 +72,8 @@ void add_generate_command(CLI::App& app) {
       ->check(number_in(0, 10000));
   command->add_option("--max-triangles", options->max_triangles,
                       "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's production")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(std::size_t{1}, std::size_t{1'000'000'000}));
   command
       ->add_option("--min-size", options->min_size,
                    "Context-free: every variant keeps at least this fraction of the exemplar's size (surface area; points "
@@ -84,7 +85,7 @@ void add_generate_command(CLI::App& app) {
                    "Context-free: no variant grows past this multiple of the exemplar's size (default: no limit)")
       ->check(number_in(1.0, 1e9));
   command->add_option("--threads", options->threads, "Worker threads (default: all cores); the files do not depend on it")
-      ->check(non_negative_number());
+      ->check(number_in(0, 4096));
   command->add_flag("--pictures", options->pictures, "Also write a PNG picture of every variant next to it");
   command->add_flag("--verify,!--no-verify", options->verify,
                     "Context-free: check every variant as `verify` does (closed, no self-intersections, r-similar at the "

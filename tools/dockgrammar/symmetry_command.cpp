@@ -25,7 +25,9 @@ void add_symmetry_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("symmetry", "Find partial rigid symmetries (translations, rotations, screw motions)");
   add_model_options(*command, options->model);
   add_search_options(*command, options->search);
-  command->add_option("--top", options->top, "How many symmetries to list and draw")->capture_default_str()->check(positive_number());
+  command->add_option("--top", options->top, "How many symmetries to list and draw")
+      ->capture_default_str()
+      ->check(number_in(std::size_t{1}, std::size_t{100000}));
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
   add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y");
   command->callback([options] {

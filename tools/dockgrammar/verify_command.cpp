@@ -36,14 +36,14 @@ void add_verify_command(CLI::App& app) {
                       "Similarity radius r in model units (default: 1.6% of the exemplar's longest bounding-box side)")
       ->check(non_negative_number());
   command->add_option("--samples", options->verify.similarity.samples, "Test points on the candidate")
-      ->check(positive_number())
+      ->check(number_in(std::size_t{1}, std::size_t{100'000'000}))
       ->capture_default_str();
   command->add_option("--seed", options->verify.similarity.seed, "Seed of the test points")->capture_default_str()->check(seed_number());
   command->add_option("--min-fraction", options->verify.min_similar_fraction,
                       "Smallest r-similar fraction that passes")
       ->check(number_in(0.0, 1.0))
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(non_negative_number());
+  command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(number_in(0, 4096));
   command->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   command->add_flag("--json", options->json, "Print machine-readable results on stdout");
   command->callback([options] {
