@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -130,31 +131,60 @@ std::array<double, 3> sorted_positions(const TriangleMesh& mesh, std::size_t t, 
   return s;
 }
 
-}  // namespace
-
-double area_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi) {
-  double area = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::array<double, 3> s = sorted_positions(mesh, t, direction);
-    if (s[2] <= lo || s[0] >= hi) continue;
-    const double whole = 0.5 * mesh.area_vector(t).norm();
-    area += triangle_area_below(s[0], s[1], s[2], whole, hi) - triangle_area_below(s[0], s[1], s[2], whole, lo);
-  }
-  return area;
-}
-
-TriangleMesh mesh_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi, double tolerance) {
-  std::vector<std::size_t> reaching;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::array<double, 3> s = sorted_positions(mesh, t, direction);
-    if (s[2] > lo && s[0] < hi) reaching.push_back(t);
-  }
+// The triangles `reaching` of `mesh` cut along the planes at lo and hi, those between them kept.
+TriangleMesh cut_out_slab(const TriangleMesh& mesh, const std::vector<std::size_t>& reaching, const Vec3& direction,
+                          double lo, double hi, double tolerance) {
   const std::vector<double> cuts{lo, hi};
   const TriangleMesh cut = cut_along_planes(submesh(mesh, reaching), direction, cuts, tolerance);
   std::vector<std::size_t> inside;
   for (std::size_t t = 0; t < cut.triangles.size(); ++t)
     if (slab_of(cut, t, direction, cuts) == 1) inside.push_back(t);
   return submesh(cut, inside);
+}
+
+}  // namespace
+
+SlabTable::SlabTable(const TriangleMesh& mesh, const Vec3& direction, double start, double pitch)
+    : mesh_(mesh), direction_(direction), start_(start), pitch_(pitch) {
+  if (mesh.triangles.empty()) return;
+  // Slab k holds a triangle when s2 > start + k pitch and s0 < start + (k + 1) pitch; its area
+  // there is what lies below the upper plane minus what lies below the lower one.
+  auto lower = [&](int k) { return start + k * pitch; };
+  auto upper = [&](int k) { return start + (k + 1) * pitch; };
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (const Vec3& p : mesh.positions) {
+    lowest = std::min(lowest, direction.dot(p));
+    highest = std::max(highest, direction.dot(p));
+  }
+  first_ = static_cast<int>(std::floor((lowest - start) / pitch)) - 1;
+  const int last = static_cast<int>(std::floor((highest - start) / pitch)) + 1;
+  triangles_.resize(static_cast<std::size_t>(last - first_ + 1));
+  areas_.assign(triangles_.size(), 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::array<double, 3> s = sorted_positions(mesh, t, direction);
+    const double whole = 0.5 * mesh.area_vector(t).norm();
+    const int from = std::max(first_, static_cast<int>(std::floor((s[0] - start) / pitch)) - 1);
+    const int to = std::min(last, static_cast<int>(std::floor((s[2] - start) / pitch)) + 1);
+    for (int k = from; k <= to; ++k) {
+      const double lo = lower(k), hi = upper(k);
+      if (s[2] <= lo || s[0] >= hi) continue;
+      const auto i = static_cast<std::size_t>(k - first_);
+      triangles_[i].push_back(t);
+      areas_[i] += triangle_area_below(s[0], s[1], s[2], whole, hi) - triangle_area_below(s[0], s[1], s[2], whole, lo);
+    }
+  }
+}
+
+double SlabTable::area(int k) const {
+  if (k < first_ || k - first_ >= static_cast<int>(areas_.size())) return 0.0;
+  return areas_[static_cast<std::size_t>(k - first_)];
+}
+
+TriangleMesh SlabTable::mesh(int k, double tolerance) const {
+  static const std::vector<std::size_t> none;
+  const bool inside = k >= first_ && k - first_ < static_cast<int>(triangles_.size());
+  return cut_out_slab(mesh_, inside ? triangles_[static_cast<std::size_t>(k - first_)] : none, direction_,
+                      start_ + k * pitch_, start_ + (k + 1) * pitch_, tolerance);
 }
 
 void drop_repeated_corners(TriangleMesh& mesh) {

@@ -26,12 +26,28 @@ std::size_t slab_of(const TriangleMesh& mesh, std::size_t t, const Vec3& directi
 /// corners lie at positions s0 <= s1 <= s2 along the direction (model units).
 double triangle_area_below(double s0, double s1, double s2, double area, double s);
 
-/// Surface area of `mesh` between the planes direction . x = lo and = hi (direction unit, lo <= hi).
-double area_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi);
+/// The slabs of `mesh` between the planes direction . x = start + k pitch and start + (k + 1)
+/// pitch (direction unit, pitch > 0, model units), found in one pass over the mesh: per slab k,
+/// the triangles lying partly strictly between its planes and their area between them. The mesh
+/// must outlive the table.
+class SlabTable {
+ public:
+  SlabTable(const TriangleMesh& mesh, const Vec3& direction, double start, double pitch);
+  /// Surface area in slab k (model units^2; 0 for a slab the mesh does not reach).
+  double area(int k) const;
+  /// The triangles reaching slab k cut along both of its planes, those between them kept (with
+  /// their materials; vertices within `tolerance` of a plane moved onto it). Empty for a slab the
+  /// mesh does not reach.
+  TriangleMesh mesh(int k, double tolerance) const;
 
-/// The triangles of `mesh` between the planes direction . x = lo and = hi, cut along both
-/// (vertices within `tolerance` of a plane moved onto it), with their materials.
-TriangleMesh mesh_between_planes(const TriangleMesh& mesh, const Vec3& direction, double lo, double hi, double tolerance);
+ private:
+  const TriangleMesh& mesh_;
+  Vec3 direction_;
+  double start_ = 0.0, pitch_ = 0.0;
+  int first_ = 0;  // slab of entry 0
+  std::vector<std::vector<std::size_t>> triangles_;  // per slab, ascending
+  std::vector<double> areas_;
+};
 
 /// Drops the triangles of `mesh` with a repeated corner (index); the others keep their order
 /// and materials.

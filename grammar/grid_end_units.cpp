@@ -16,18 +16,14 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
   const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
   // Slab k lies between start + k p and start + (k + 1) p; each walk outward compares a slab with
-  // the one it compared before, so areas and cut meshes are kept per slab.
-  std::map<int, double> areas;
+  // the one it compared before, so cut meshes are kept per slab.
+  const SlabTable slabs(mesh, d, start, p);
   std::map<int, TriangleMesh> meshes;
-  auto area = [&](int k) {
-    auto [it, added] = areas.try_emplace(k, 0.0);
-    if (added) it->second = area_between_planes(mesh, d, start + k * p, start + (k + 1) * p);
-    return it->second;
-  };
+  auto area = [&](int k) { return slabs.area(k); };
   auto slab = [&](int k) -> const TriangleMesh& {
     auto [it, added] = meshes.try_emplace(k);
     if (!added) return it->second;
-    TriangleMesh& cut = it->second = mesh_between_planes(mesh, d, start + k * p, start + (k + 1) * p, snap);
+    TriangleMesh& cut = it->second = slabs.mesh(k, snap);
     if (material_classes.empty()) cut.materials.clear();
     for (std::uint32_t& m : cut.materials) m = material_classes[m];
     return it->second;
