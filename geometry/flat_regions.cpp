@@ -1,6 +1,5 @@
 #include "geometry/flat_regions.h"
 
-#include "geometry/cell_key.h"
 #include "geometry/flat_faces.h"
 #include "geometry/segment_index.h"
 #include "geometry/union_find.h"
@@ -10,7 +9,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 
 namespace dg {
@@ -94,27 +92,21 @@ std::vector<Vec3> points_along(const Segment& segment, double spacing) {
 }
 
 // Whether every point of `from` (sampled every distance / 4) lies within `distance` (model units)
-// of a segment of `to`. The segments of `to` are hashed on cells of 1.5 distance around their
-// points every distance / 2, so a point within `distance` of one finds it in its own cell
-// (SegmentIndex hashes every cell of a segment's box: too many for long oblique outline edges).
+// of a segment of `to`. Each point tries first the segment of `to` the point before it was near
+// (neighbouring points nearly always share one), then all of them; a point near none ends the
+// test there.
 bool outline_within(const std::vector<Segment>& from, const std::vector<Segment>& to, double distance) {
-  const double cell = 1.5 * distance;
-  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellKeyHash> grid;
-  for (std::uint32_t i = 0; i < to.size(); ++i)
-    for (const Vec3& p : points_along(to[i], 0.5 * distance)) {
-      const CellKey k = cell_key(p, cell);
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy)
-          for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            std::vector<std::uint32_t>& listed = grid[{k[0] + dx, k[1] + dy, k[2] + dz}];
-            if (listed.empty() || listed.back() != i) listed.push_back(i);
-          }
-    }
+  std::size_t last = 0;
+  auto near_segment = [&](const Vec3& p, std::size_t i) { return (closest_point_on_segment(p, to[i]) - p).norm() <= distance; };
   auto near = [&](const Vec3& p) {
-    const auto found = grid.find(cell_key(p, cell));
-    if (found == grid.end()) return false;
-    return std::any_of(found->second.begin(), found->second.end(),
-                       [&](std::uint32_t i) { return (closest_point_on_segment(p, to[i]) - p).norm() <= distance; });
+    if (to.empty()) return false;
+    if (near_segment(p, last)) return true;
+    for (std::size_t i = 0; i < to.size(); ++i)
+      if (i != last && near_segment(p, i)) {
+        last = i;
+        return true;
+      }
+    return false;
   };
   return std::all_of(from.begin(), from.end(), [&](const Segment& segment) {
     const std::vector<Vec3> points = points_along(segment, 0.25 * distance);
