@@ -51,6 +51,18 @@ std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPie
   return placements;
 }
 
+std::size_t resized_size(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
+  check_counts(grid, counts);
+  std::size_t size = 0;
+  for (const GridPiece& piece : pieces) {
+    std::size_t copies = 1;
+    for (std::size_t i = 0; i < grid.directions.size(); ++i)
+      if (piece.classes[i] == 1) copies *= static_cast<std::size_t>(std::max(0, counts[i] - min_units(grid.directions[i])));
+    size += copies * (piece.mesh.triangles.size() + piece.points.positions.size());
+  }
+  return size;
+}
+
 TriangleMesh resize_grid(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts,
                          double eps) {
   check_counts(grid, counts);

@@ -16,6 +16,11 @@ namespace dg {
 /// the copies are all combinations (the generators of a grid commute).
 std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts);
 
+/// How many triangles (points, for a point-cloud grammar's pieces) a resize of `grid` to
+/// `counts` places before welding: each piece's size times its copies (piece_placements), counted
+/// without placing them. Throws as resize_grid for counts it refuses.
+std::size_t resized_size(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts);
+
 /// Assembles the pieces of `grid` for `counts` (one per direction, within the grid's count
 /// range), welds seam vertices of different copies closer than grid_weld_tolerance
 /// (grammar/grid_seams.h: twice the grid's seam misfit, at least 1e-4 of the voxel size `eps`;

@@ -256,6 +256,36 @@ TEST_CASE("resize CLI: unknown grid or count out of range exits 2 and writes not
   std::filesystem::remove_all(folder);
 }
 
+TEST_CASE("resized_size counts every piece's copies, and the resize CLI refuses one past --max-triangles",
+          "[synthesis][grid]") {
+  const Grammar g = grammar_of("fence", {{"n", 4}});
+  for (int n : {1, 4, 9, 40}) {
+    CAPTURE(n);
+    const std::vector<int> counts = counts_for(g.grid, {{Vec3(2, 0, 0), n}});
+    std::size_t placed = 0;
+    for (const dg::GridPiece& piece : g.pieces)
+      placed += dg::piece_placements(g.grid, piece, counts).size() * piece.mesh.triangles.size();
+    CHECK(dg::resized_size(g.grid, g.pieces, counts) == placed);
+  }
+  CHECK_THROWS_AS(dg::resized_size(g.grid, g.pieces, {1, 1}), dg::InputError);
+
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-resize-limit-test");
+  const dg::test::AnalyzedModel fence = dg::test::analyze_model("fence_4", folder);
+  REQUIRE(fence.run.status == 0);
+  const std::string out = (folder / "long.obj").string();
+  const dg::test::CliRun refused =
+      dg::test::run_cli("resize " + fence.grammar.string() + " --grid grid1=900 --max-triangles 20000 -o " + out, folder);
+  CHECK(refused.status == 2);
+  CHECK(refused.output.find("grid1=900 would place about") != std::string::npos);
+  CHECK(refused.output.find("more than --max-triangles 20000") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+  // The default limit lets the longest fence the grid allows through.
+  const dg::test::CliRun built = dg::test::run_cli("resize " + fence.grammar.string() + " --grid grid1=900 -q -o " + out, folder);
+  CHECK(built.status == 0);
+  CHECK(std::filesystem::exists(out));
+  std::filesystem::remove_all(folder);
+}
+
 TEST_CASE("resize CLI: a count below the units a grid's head keeps exits 2 and says why", "[synthesis][grid]") {
   const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-resize-kept-test");
   const dg::test::AnalyzedModel messy = dg::test::analyze_model("messy_facade_3x4", folder);

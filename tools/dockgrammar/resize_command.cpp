@@ -8,9 +8,11 @@
 #include "geometry/point_splats.h"
 #include "geometry/submesh.h"
 #include "grammar/grammar_file.h"
+#include "synthesis/grid_resize.h"
 #include "synthesis/several_grids.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/output_frame.h"
+#include "tools/dockgrammar/number_checks.h"
 #include "tools/dockgrammar/pictures.h"
 
 #include <fmt/core.h>
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 namespace dg::cli {
@@ -41,6 +44,30 @@ std::pair<std::string, std::vector<int>> parse_grid_counts(const std::string& te
   return {text.substr(0, equals), counts};
 }
 
+// Throws LimitError when the resizes would place more than `limit` triangles (points): the
+// exemplar's plus what each resize adds to its grid's pieces at the exemplar's counts.
+void check_resized_size(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes, std::size_t limit) {
+  const bool points = is_point_grammar(grammar);
+  double size = static_cast<double>(points ? grammar.exemplar_points.positions.size() : grammar.exemplar.triangles.size());
+  std::string named;
+  for (const GridResize& resize : resizes) {
+    const GridWithPieces& grid = grammar.grids[resize.grid];
+    std::vector<int> own;
+    for (const GridDirection& d : grid.rule.directions) own.push_back(d.count);
+    size += static_cast<double>(resized_size(grid.rule, grid.pieces, resize.counts)) -
+            static_cast<double>(resized_size(grid.rule, grid.pieces, own));
+    std::string counts;
+    for (int c : resize.counts) counts += fmt::format("{}{}", counts.empty() ? "" : "x", c);
+    named += fmt::format("{}{}={}", named.empty() ? "" : ", ", grid.rule.name, counts);
+  }
+  if (size <= static_cast<double>(limit)) return;
+  const double bytes = 200.0 * size;
+  throw LimitError(fmt::format("{} would place about {:.0f} {} (about {} while building), more than --max-triangles {}; "
+                               "raise it to build it anyway",
+                               named, size, points ? "points" : "triangles",
+                               bytes >= 1e9 ? fmt::format("{:.0f} GB", bytes / 1e9) : fmt::format("{:.0f} MB", bytes / 1e6), limit));
+}
+
 }  // namespace
 
 void add_resize_command(CLI::App& app) {
@@ -51,6 +78,7 @@ void add_resize_command(CLI::App& app) {
     bool picture = false;
     bool quiet = false;
     std::string up;
+    std::size_t max_size = 50'000'000;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
@@ -60,6 +88,12 @@ void add_resize_command(CLI::App& app) {
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
   command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
   add_up_option(*command, options->up, "the axis analyze --up stored in the grammar file, else guessed from the exemplar");
+  command
+      ->add_option("--max-triangles", options->max_size,
+                   "Refuse a resize that would place more triangles (points, for a point-cloud grammar) than this; "
+                   "each costs about 200 bytes while it is built")
+      ->capture_default_str()
+      ->check(number_in(std::size_t{1}, std::numeric_limits<std::size_t>::max()));
   command->callback([options] {
     const ShapeGrammar grammar = read_grammar(options->grammar);
     std::vector<GridResize> resizes;
@@ -74,6 +108,7 @@ void add_resize_command(CLI::App& app) {
       }
       resizes.push_back({static_cast<std::size_t>(grid - grammar.grids.begin()), std::move(counts)});
     }
+    check_resized_size(grammar, resizes, options->max_size);
     const std::filesystem::path output(options->output);
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (is_point_grammar(grammar)) {
