@@ -3,12 +3,14 @@
 #include "geometry/errors.h"
 #include "geometry/same_surface.h"
 #include "geometry/random.h"
+#include "synthesis/grid_resize.h"
 #include "synthesis/several_grids.h"
 #include "synthesis/verify.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace dg {
 
@@ -17,6 +19,34 @@ std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
+}
+
+namespace {
+
+// The counts a grid variant draws direction i of `grid` from: [ceil(count / factor), count *
+// factor], at least 1 and within the grid's range.
+std::pair<int, int> count_range(const GridRule& grid, std::size_t i, double factor) {
+  const GridDirection& d = grid.directions[i];
+  const int lo = std::max({1, lowest_count(grid, i), static_cast<int>(std::ceil(d.count / factor))});
+  const int hi = std::max(lo, std::min(grid.max_count, static_cast<int>(std::floor(d.count * factor))));
+  return {lo, hi};
+}
+
+}  // namespace
+
+std::size_t largest_grid_variant_size(const ShapeGrammar& grammar, const VariantOptions& options) {
+  double size = static_cast<double>(is_point_grammar(grammar) ? grammar.exemplar_points.positions.size()
+                                                                : grammar.exemplar.triangles.size());
+  for (const GridWithPieces& grid : grammar.grids) {
+    std::vector<int> largest, own;
+    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
+      largest.push_back(count_range(grid.rule, i, options.range_factor).second);
+      own.push_back(grid.rule.directions[i].count);
+    }
+    size += static_cast<double>(resized_size(grid.rule, grid.pieces, largest)) -
+            static_cast<double>(resized_size(grid.rule, grid.pieces, own));
+  }
+  return static_cast<std::size_t>(std::max(0.0, size));
 }
 
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options) {
@@ -62,9 +92,7 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
     for (int draw = 0; draw <= 8 && (draw == 0 || (other_counts && counts == exemplar_counts)); ++draw) {
       counts.clear();
       for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-        const GridDirection& d = grid.rule.directions[i];
-        const int lo = std::max({1, lowest_count(grid.rule, i), static_cast<int>(std::ceil(d.count / options.range_factor))});
-        const int hi = std::max(lo, std::min(grid.rule.max_count, static_cast<int>(std::floor(d.count * options.range_factor))));
+        const auto [lo, hi] = count_range(grid.rule, i, options.range_factor);
         other_counts = other_counts || lo < hi;
         counts.push_back(lo + static_cast<int>(random.uniform() * (hi - lo + 1)));
       }

@@ -67,6 +67,11 @@ struct Variant {
 /// Seed of variant `index` of a batch started with `seed` (SplitMix64 of both).
 std::uint64_t variant_seed(std::uint64_t seed, std::uint64_t index);
 
+/// The most triangles (points, for a point-cloud grammar) a grid variant can place before
+/// welding: the exemplar's, plus what each grid adds at the largest counts options.range_factor
+/// lets it draw in every direction (resized_size), so a batch can be refused before it starts.
+std::size_t largest_grid_variant_size(const ShapeGrammar& grammar, const VariantOptions& options);
+
 /// Plans variant `index`. Throws InputError when the grammar has no rules of the requested kind.
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options = {});
 

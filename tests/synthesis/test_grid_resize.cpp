@@ -9,8 +9,10 @@
 #include "support/cli_run.h"
 #include "support/mesh_distance.h"
 #include "support/shapes.h"
+#include "synthesis/variants.h"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <filesystem>
 #include <fstream>
@@ -279,6 +281,24 @@ TEST_CASE("resized_size counts every piece's copies, and the resize CLI refuses 
   CHECK(refused.output.find("grid1=900 would place about") != std::string::npos);
   CHECK(refused.output.find("more than --max-triangles 20000") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
+  // generate refuses grid variants whose largest draw could pass --max-triangles, before it
+  // makes its folder.
+  const dg::ShapeGrammar grammar = dg::read_grammar(fence.grammar);
+  dg::VariantOptions variant_options;
+  variant_options.range_factor = 1.0;
+  CHECK(dg::largest_grid_variant_size(grammar, variant_options) == grammar.exemplar.triangles.size());
+  variant_options.range_factor = 100.0;
+  const std::size_t largest = dg::largest_grid_variant_size(grammar, variant_options);
+  CHECK(largest > 20 * grammar.exemplar.triangles.size());  // 4 units become 400
+  const std::filesystem::path batch = folder / "batch";
+  const dg::test::CliRun too_many = dg::test::run_cli("generate " + fence.grammar.string() +
+                                                          " --rules grid --range-factor 100 --max-triangles 20000 --count 2 -o " +
+                                                          batch.string(),
+                                                      folder);
+  CHECK(too_many.status == 2);
+  CHECK(too_many.output.find(fmt::format("could place about {} triangles, more than --max-triangles 20000", largest)) !=
+        std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(batch));
   // The default limit lets the longest fence the grid allows through.
   const dg::test::CliRun built = dg::test::run_cli("resize " + fence.grammar.string() + " --grid grid1=900 -q -o " + out, folder);
   CHECK(built.status == 0);

@@ -71,7 +71,8 @@ void add_generate_command(CLI::App& app) {
       ->capture_default_str()
       ->check(number_in(0, 10000));
   command->add_option("--max-triangles", options->max_triangles,
-                      "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's production")
+                      "Context-free: after this many triangles (points, for a point-cloud grammar) every slot gets the exemplar's "
+                      "production; grid variants: a batch whose largest counts could place more is refused")
       ->capture_default_str()
       ->check(number_in(std::size_t{1}, std::size_t{1'000'000'000}));
   command
@@ -106,7 +107,6 @@ void add_generate_command(CLI::App& app) {
     if (points && format != "ply")
       throw InputError(options->grammar + ": the grammar was made from a point cloud, so its variants are point clouds: use --format ply");
     const std::filesystem::path folder(options->output);
-    create_output_folder(folder);
     VariantOptions variant_options;
     variant_options.range_factor = options->range_factor;
     variant_options.rules = options->rules == "grid"           ? VariantRules::grid
@@ -119,6 +119,14 @@ void add_generate_command(CLI::App& app) {
     variant_options.derivation.max_size = options->max_size;
     const MeshRenderOptions picture = picture_options(exemplar_bounds(grammar), options->up.empty() ? grammar.up_axis : options->up);
     if (options->orientation == "upright") variant_options.derivation.up = picture.camera.up.normalized();
+    if (!plan_variant(grammar, options->seed, options->first, variant_options).context_free) {
+      const std::size_t largest = largest_grid_variant_size(grammar, variant_options);
+      if (largest > options->max_triangles)
+        throw LimitError(fmt::format("grid variants with counts up to {} times the exemplar's (--range-factor) could place "
+                                     "about {} {}, more than --max-triangles {}; lower the one or raise the other",
+                                     options->range_factor, largest, points ? "points" : "triangles", options->max_triangles));
+    }
+    create_output_folder(folder);
     // Model frame -> the mesh files' (the source model's axes; a .glb turned so that up is +y).
     const RigidTransform to_file = file_frame("variant." + format, picture.camera.up.normalized()).after(to_source_frame(grammar));
     const double exemplar_size = points ? static_cast<double>(grammar.exemplar_points.positions.size()) : grammar.exemplar.area();
