@@ -74,6 +74,13 @@ struct GridOptions {
   double max_slab_asymmetry = 0.03;
 };
 
+/// The exemplar's count in each direction of `grid` (resizing to them reproduces it).
+inline std::vector<int> exemplar_counts(const GridRule& grid) {
+  std::vector<int> counts;
+  for (const GridDirection& d : grid.directions) counts.push_back(d.count);
+  return counts;
+}
+
 /// Smallest count direction i of `grid` accepts: the grid's min_count, and at least the units
 /// its head and tail keep.
 inline int lowest_count(const GridRule& grid, std::size_t i) {

@@ -54,8 +54,7 @@ std::vector<GridResize> resize_order(const ShapeGrammar& grammar, std::vector<Gr
 // Positions a resize of `grid` to `counts` moves or adds: the vertices (points) of its pieces
 // that are not head pieces in every direction, where the exemplar's counts and `counts` put them.
 std::vector<Vec3> changed_positions(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
-  std::vector<int> exemplar_counts;
-  for (const GridDirection& d : grid.directions) exemplar_counts.push_back(d.count);
+  const std::vector<int> exemplar_counts = dg::exemplar_counts(grid);
   std::vector<Vec3> positions;
   for (const GridPiece& piece : pieces) {
     if (std::all_of(piece.classes.begin(), piece.classes.end(), [](int c) { return c == 0; })) continue;
@@ -122,6 +121,17 @@ TriangleMesh resize_grids(const ShapeGrammar& grammar, const std::vector<GridRes
         return resize_grid(rule, pieces, counts, grammar.eps);
       },
       [&](const TriangleMesh& mesh, const GridRule& rule) { return cut_grid_pieces(mesh, rule, grammar.eps); });
+}
+
+std::size_t resized_model_size(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes) {
+  double size = static_cast<double>(is_point_grammar(grammar) ? grammar.exemplar_points.positions.size()
+                                                                : grammar.exemplar.triangles.size());
+  for (const GridResize& resize : resizes) {
+    const GridWithPieces& grid = grammar.grids[resize.grid];
+    size += static_cast<double>(resized_size(grid.rule, grid.pieces, resize.counts)) -
+            static_cast<double>(resized_size(grid.rule, grid.pieces, exemplar_counts(grid.rule)));
+  }
+  return static_cast<std::size_t>(std::max(0.0, size));
 }
 
 PointCloud resize_grids_points(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes) {

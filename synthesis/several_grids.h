@@ -24,6 +24,12 @@ struct GridResize {
 /// when two of the grids keep separate parts whole, and for counts resize_grid refuses.
 TriangleMesh resize_grids(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes);
 
+/// About how many triangles (points, for a point-cloud grammar) resize_grids places for
+/// `resizes`: the exemplar's, plus what each resize adds to its grid's pieces at the exemplar's
+/// counts (resized_size), counted without placing anything. Throws as resize_grid for counts it
+/// refuses.
+std::size_t resized_model_size(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes);
+
 /// resize_grids for a point-cloud grammar (pieces cut again with cut_grid_points).
 PointCloud resize_grids_points(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes);
 

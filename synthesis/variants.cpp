@@ -3,7 +3,6 @@
 #include "geometry/errors.h"
 #include "geometry/same_surface.h"
 #include "geometry/random.h"
-#include "synthesis/grid_resize.h"
 #include "synthesis/several_grids.h"
 #include "synthesis/verify.h"
 
@@ -35,18 +34,13 @@ std::pair<int, int> count_range(const GridRule& grid, std::size_t i, double fact
 }  // namespace
 
 std::size_t largest_grid_variant_size(const ShapeGrammar& grammar, const VariantOptions& options) {
-  double size = static_cast<double>(is_point_grammar(grammar) ? grammar.exemplar_points.positions.size()
-                                                                : grammar.exemplar.triangles.size());
-  for (const GridWithPieces& grid : grammar.grids) {
-    std::vector<int> largest, own;
-    for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
-      largest.push_back(count_range(grid.rule, i, options.range_factor).second);
-      own.push_back(grid.rule.directions[i].count);
-    }
-    size += static_cast<double>(resized_size(grid.rule, grid.pieces, largest)) -
-            static_cast<double>(resized_size(grid.rule, grid.pieces, own));
+  std::vector<GridResize> largest;
+  for (std::size_t g = 0; g < grammar.grids.size(); ++g) {
+    largest.push_back({g, {}});
+    for (std::size_t i = 0; i < grammar.grids[g].rule.directions.size(); ++i)
+      largest.back().counts.push_back(count_range(grammar.grids[g].rule, i, options.range_factor).second);
   }
-  return static_cast<std::size_t>(std::max(0.0, size));
+  return resized_model_size(grammar, largest);
 }
 
 VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::uint64_t index, const VariantOptions& options) {
@@ -84,8 +78,8 @@ VariantPlan plan_variant(const ShapeGrammar& grammar, std::uint64_t seed, std::u
   if (grammar.grids.size() > 1)
     plan.grid = std::min(grammar.grids.size() - 1, static_cast<std::size_t>(random.uniform() * static_cast<double>(grammar.grids.size())));
   for (const GridWithPieces& grid : grammar.grids) {
-    std::vector<int> counts, exemplar_counts;
-    for (const GridDirection& d : grid.rule.directions) exemplar_counts.push_back(d.count);
+    std::vector<int> counts;
+    const std::vector<int> exemplar_counts = dg::exemplar_counts(grid.rule);
     // Counts equal to the exemplar's in every direction rebuild the exemplar: drawn again (up to
     // 8 times, from the same stream) when the ranges allow other counts.
     bool other_counts = false;

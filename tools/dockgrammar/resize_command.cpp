@@ -8,7 +8,6 @@
 #include "geometry/point_splats.h"
 #include "geometry/submesh.h"
 #include "grammar/grammar_file.h"
-#include "synthesis/grid_resize.h"
 #include "synthesis/several_grids.h"
 #include "tools/dockgrammar/output_folder.h"
 #include "tools/dockgrammar/output_frame.h"
@@ -16,6 +15,7 @@
 #include "tools/dockgrammar/pictures.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <charconv>
@@ -44,27 +44,17 @@ std::pair<std::string, std::vector<int>> parse_grid_counts(const std::string& te
   return {text.substr(0, equals), counts};
 }
 
-// Throws LimitError when the resizes would place more than `limit` triangles (points): the
-// exemplar's plus what each resize adds to its grid's pieces at the exemplar's counts.
+// Throws LimitError when the resizes would place more than `limit` triangles (points).
 void check_resized_size(const ShapeGrammar& grammar, const std::vector<GridResize>& resizes, std::size_t limit) {
-  const bool points = is_point_grammar(grammar);
-  double size = static_cast<double>(points ? grammar.exemplar_points.positions.size() : grammar.exemplar.triangles.size());
+  const std::size_t size = resized_model_size(grammar, resizes);
+  if (size <= limit) return;
   std::string named;
-  for (const GridResize& resize : resizes) {
-    const GridWithPieces& grid = grammar.grids[resize.grid];
-    std::vector<int> own;
-    for (const GridDirection& d : grid.rule.directions) own.push_back(d.count);
-    size += static_cast<double>(resized_size(grid.rule, grid.pieces, resize.counts)) -
-            static_cast<double>(resized_size(grid.rule, grid.pieces, own));
-    std::string counts;
-    for (int c : resize.counts) counts += fmt::format("{}{}", counts.empty() ? "" : "x", c);
-    named += fmt::format("{}{}={}", named.empty() ? "" : ", ", grid.rule.name, counts);
-  }
-  if (size <= static_cast<double>(limit)) return;
-  const double bytes = 200.0 * size;
-  throw LimitError(fmt::format("{} would place about {:.0f} {} (about {} while building), more than --max-triangles {}; "
+  for (const GridResize& resize : resizes)
+    named += fmt::format("{}{}={}", named.empty() ? "" : ", ", grammar.grids[resize.grid].rule.name, fmt::join(resize.counts, "x"));
+  const double bytes = 200.0 * static_cast<double>(size);
+  throw LimitError(fmt::format("{} would place about {} {} (about {} while building), more than --max-triangles {}; "
                                "raise it to build it anyway",
-                               named, size, points ? "points" : "triangles",
+                               named, size, is_point_grammar(grammar) ? "points" : "triangles",
                                bytes >= 1e9 ? fmt::format("{:.0f} GB", bytes / 1e9) : fmt::format("{:.0f} MB", bytes / 1e6), limit));
 }
 
