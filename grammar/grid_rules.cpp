@@ -157,7 +157,7 @@ bool spans_pitches(const BoundingBox& bounds, const Vec3& t, int pitches) {
 // apart.
 std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const DetectedSymmetry& symmetry,
                                             std::size_t symmetry_index, int min_repeats, double max_slab_asymmetry,
-                                            double copy_tolerance) {
+                                            double copy_tolerance, const std::vector<std::pair<double, double>>& taken = {}) {
   const VoxelSurface& surface = prepared.surface;
   const ScrewParameters screw = screw_parameters(symmetry.transform);
   const Vec3 t = symmetry.kind == "translation" ? symmetry.transform.translation : screw.slide * screw.axis;
@@ -177,6 +177,11 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     if (!in_r[c]) forward.add(s - half, s + half);
     if (!in_xi[c]) first_plane.add(s - half, s + half);
     slab_cells.add(s, in_xi[c] != 0);
+  }
+  // Runs found before along this motion keep their planes and half a pitch around them.
+  for (const auto& [lo, hi] : taken) {
+    forward.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
+    first_plane.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
   }
   forward.finish();
   slab_cells.finish();
@@ -347,7 +352,10 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       while (free < min_repeats && first + free * pitch <= highest && !forward.contains(first + free * pitch)) ++free;
       may_repeat = free == min_repeats && slabs_repeat(first, min_repeats - 1);
     }
-  if (!may_repeat) return copied_chain(0);
+  // A further run along the motion is a chain between planes (copies side by side are sought
+  // for the first run only).
+  const bool further = !taken.empty();
+  if (!may_repeat) return further ? std::nullopt : copied_chain(0);
 
   std::vector<char> in_image(surface.cell_count(), 0);
   const CellMatcher matcher(surface, nullptr);
@@ -373,6 +381,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       if (lo <= hi) first_plane.add(lo, hi);
     }
   }
+  for (const auto& [lo, hi] : taken) backward.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
   backward.finish();
   first_plane.finish();
 
@@ -453,11 +462,30 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   constexpr int kSlidingChainsTried = 4;
   std::vector<std::pair<double, double>> sliding;
   std::optional<GridDirection> best = best_chain(sliding);
-  if (!best) return copied_chain(0);
+  if (!best) return further ? std::nullopt : copied_chain(0);
   while (best && !points && unit_only_slides(mesh, *best)) {
     if (static_cast<int>(sliding.size()) + 1 >= kSlidingChainsTried) return std::nullopt;
     sliding.emplace_back(best->cut, best->cut + best->count * pitch);
     best = best_chain(sliding);
+  }
+  // Units counted beyond its planes may not reach into a run found before, and the runs next to
+  // it must lie apart: what lies between is mostly a different part (a gate between two stretches
+  // of fence), not more of the row that planes could not cross (brackets behind a radiator's fins).
+  if (further && best) {
+    const double lo = best->cut, hi = best->cut + best->count * pitch;
+    double below = -std::numeric_limits<double>::infinity(), above = std::numeric_limits<double>::infinity();
+    for (const auto& [a, b] : taken) {
+      if (lo < b && hi > a) return std::nullopt;
+      if (b <= lo) below = std::max(below, b);
+      if (a >= hi) above = std::min(above, a);
+    }
+    auto mostly_different = [&](double from, double to) {
+      const auto [asymmetric_cells, cells] = slab_cells.count(from, to);
+      return 2 * asymmetric_cells > cells;
+    };
+    if ((std::isfinite(below) && !mostly_different(below, lo)) || (std::isfinite(above) && !mostly_different(hi, above)))
+      return std::nullopt;
+    return best;
   }
   // Room for another unit: copies side by side at another phase may reach further.
   if (best && (best->count + 1) * pitch <= highest - lowest)
@@ -558,6 +586,9 @@ std::optional<int> place_whole_parts(GridDirection& direction, const TriangleMes
   }
   return fewest;
 }
+
+// Runs of a direction sought beyond its first, apart from each other.
+constexpr std::size_t kFurtherRuns = 3;
 
 // Members of a family tried for a row of parts: the generator and its square (each builds the
 // voxel surface of the rest of the model and tests its every cell).
@@ -693,6 +724,25 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
     GridRule screw_grid = next_grid();
     screw_grid.directions.push_back(direction);
     grids.push_back(std::move(screw_grid));
+  }
+  // Further runs of grid1's directions, apart from the first (fences on both sides of a gate):
+  // each is a 1-grid of its own, its planes clear of the runs found before.
+  if (!grids.empty() && !prepared.model.is_point_cloud()) {
+    const std::vector<GridDirection> first_runs = grids[0].directions;
+    for (const GridDirection& run : first_runs) {
+      if (run.count < options.min_repeats || !run.whole_in_head.empty() || !run.whole_in_tail.empty()) continue;
+      std::vector<std::pair<double, double>> taken{{run.cut, run.cut + run.count * run.pitch}};
+      while (taken.size() <= kFurtherRuns) {
+        std::optional<GridDirection> further =
+            grid_direction(prepared, symmetries.symmetries[run.symmetry], run.symmetry, options.min_repeats,
+                           options.max_slab_asymmetry, copy_tolerance, taken);
+        if (!further) break;
+        taken.emplace_back(further->cut, further->cut + further->count * further->pitch);
+        GridRule further_grid = next_grid();
+        further_grid.directions.push_back(std::move(*further));
+        grids.push_back(std::move(further_grid));
+      }
+    }
   }
   report_progress(progress, "grid rules", 1.0);
   return grids;

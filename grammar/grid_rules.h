@@ -99,7 +99,11 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
 /// chain, and copies of the unit beyond the first and last plane join the count
 /// (grammar/grid_end_units.h); a mesh's slabs that are copies of the next side by side (checked
 /// on the mesh, planes anywhere but on a face) give the direction when no chain of min_repeats
-/// units lies in the r-symmetric area or when they reach more units. Families are examined
+/// units lies in the r-symmetric area or when they reach more units. A further run of a
+/// direction of grid1 with min_repeats units (planes at least half a pitch clear of the runs
+/// before, what lies between it and its neighbouring runs mostly outside the symmetric region,
+/// such as a gate between two stretches of fence) gives a 1-grid of its own, after the screws'
+/// grids, up to three per direction; a point cloud gets none. Families are examined
 /// in parallel; the result does not depend on the thread count. `progress` hears stage "grid
 /// rules" with the fraction of repetition families examined (after each parallel batch), then 1.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,

@@ -12,9 +12,7 @@
 #include <algorithm>
 
 namespace dg {
-namespace {
 
-// Throws InputError unless `counts` has one count per direction of `grid`, each in its range.
 void check_counts(const GridRule& grid, const std::vector<int>& counts) {
   if (counts.size() != grid.directions.size())
     throw InputError(fmt::format("grid {} has {} direction(s) but {} count(s) were given", grid.name,
@@ -31,8 +29,6 @@ void check_counts(const GridRule& grid, const std::vector<int>& counts) {
                                        : ""));
   }
 }
-
-}  // namespace
 
 std::vector<RigidTransform> piece_placements(const GridRule& grid, const GridPiece& piece, const std::vector<int>& counts) {
   std::vector<RigidTransform> placements{RigidTransform{}};

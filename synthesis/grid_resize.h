@@ -10,6 +10,10 @@
 
 namespace dg {
 
+/// Throws InputError unless `counts` has one count per direction of `grid`, each in the range
+/// it accepts (lowest_count .. max_count).
+void check_counts(const GridRule& grid, const std::vector<int>& counts);
+
 /// Where a resize of `grid` to `counts` (one per direction) places the copies of `piece`: per
 /// direction, the identity for a head piece, the k-th power of the generator (k = 0 .. count -
 /// head and tail units - 1) for a unit piece, the power count - exemplar count for a tail piece;

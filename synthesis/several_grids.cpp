@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <numeric>
 #include <optional>
 #include <utility>
 
@@ -23,32 +24,6 @@ bool changes_counts(const GridRule& grid, const std::vector<int>& counts) {
   for (std::size_t i = 0; i < grid.directions.size() && i < counts.size(); ++i)
     if (counts[i] != grid.directions[i].count) return true;
   return counts.size() != grid.directions.size();  // resize_grid reports the mismatch
-}
-
-// The resizes in the order they are applied: the one grid that keeps separate parts whole first
-// (its parts are named by the exemplar's triangles, so only the exemplar's pieces hold them),
-// then grammar order; grids keeping their exemplar's counts are left out unless all do.
-std::vector<GridResize> resize_order(const ShapeGrammar& grammar, std::vector<GridResize> resizes) {
-  for (std::size_t a = 0; a < resizes.size(); ++a) {
-    if (resizes[a].grid >= grammar.grids.size()) throw InputError(fmt::format("no grid {}", resizes[a].grid + 1));
-    for (std::size_t b = 0; b < a; ++b)
-      if (resizes[a].grid == resizes[b].grid)
-        throw InputError(fmt::format("grid {} is given twice", grammar.grids[resizes[a].grid].rule.name));
-  }
-  if (resizes.empty()) throw InputError("no grid to resize");
-  std::vector<GridResize> changing;
-  for (const GridResize& r : resizes)
-    if (changes_counts(grammar.grids[r.grid].rule, r.counts)) changing.push_back(r);
-  if (changing.empty()) changing.push_back(resizes.front());
-  std::stable_sort(changing.begin(), changing.end(), [&](const GridResize& a, const GridResize& b) {
-    const bool whole_a = keeps_parts_whole(grammar.grids[a.grid].rule), whole_b = keeps_parts_whole(grammar.grids[b.grid].rule);
-    return whole_a != whole_b ? whole_a : a.grid < b.grid;
-  });
-  if (changing.size() > 1 && keeps_parts_whole(grammar.grids[changing[1].grid].rule))
-    throw InputError(fmt::format("grids {} and {} both keep separate parts whole: resize one, analyze the result, then "
-                                 "resize the other",
-                                 grammar.grids[changing[0].grid].rule.name, grammar.grids[changing[1].grid].rule.name));
-  return changing;
 }
 
 // Positions a resize of `grid` to `counts` moves or adds: the vertices (points) of its pieces
@@ -78,6 +53,78 @@ std::optional<std::vector<int>> shared_classes(const GridRule& grid, const std::
     if (*shared != classes) return std::nullopt;
   }
   return shared;
+}
+
+// Most resizes whose orders are tried; beyond, grammar order is kept.
+constexpr std::size_t kOrdersTried = 5;
+
+// Whether resizing in `order` keeps what each resize changes (`changes`, per grid, where the
+// exemplar's pieces put them) in one head or tail piece of every grid resized after it; a tail
+// moves what it holds, which then needs no further check (as resize_in_order judges it).
+bool stays_in_stored_pieces(const ShapeGrammar& grammar, const std::vector<GridResize>& order,
+                            const std::vector<std::vector<Vec3>>& changes) {
+  std::vector<Vec3> changed;
+  for (std::size_t step = 0; step < order.size(); ++step) {
+    const GridRule& grid = grammar.grids[order[step].grid].rule;
+    if (step > 0 && !changed.empty()) {
+      const std::optional<std::vector<int>> classes = shared_classes(grid, changed);
+      if (!classes || std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0 && c != 2; })) return false;
+      if (std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; })) changed.clear();
+    }
+    changed.insert(changed.end(), changes[step].begin(), changes[step].end());
+  }
+  return true;
+}
+
+// `resizes` (the one keeping parts whole first, then grammar order) in the first order that
+// stays_in_stored_pieces, or as given when none does (resize_in_order then names the overlap).
+std::vector<GridResize> feasible_order(const ShapeGrammar& grammar, std::vector<GridResize> resizes) {
+  if (resizes.size() < 2 || resizes.size() > kOrdersTried) return resizes;
+  const bool whole_first = keeps_parts_whole(grammar.grids[resizes.front().grid].rule);
+  std::vector<std::vector<Vec3>> changes;
+  for (const GridResize& r : resizes) {
+    const GridWithPieces& grid = grammar.grids[r.grid];
+    changes.push_back(changed_positions(grid.rule, grid.pieces, r.counts));
+  }
+  std::vector<std::size_t> permutation(resizes.size());
+  std::iota(permutation.begin(), permutation.end(), std::size_t{0});
+  do {
+    if (whole_first && permutation.front() != 0) continue;
+    std::vector<GridResize> order;
+    std::vector<std::vector<Vec3>> ordered_changes;
+    for (std::size_t i : permutation) order.push_back(resizes[i]), ordered_changes.push_back(changes[i]);
+    if (stays_in_stored_pieces(grammar, order, ordered_changes)) return order;
+  } while (std::next_permutation(permutation.begin(), permutation.end()));
+  return resizes;
+}
+
+// The resizes in the order they are applied: the one grid that keeps separate parts whole first
+// (its parts are named by the exemplar's triangles, so only the exemplar's pieces hold them),
+// then the first order (by grammar order) in which, judged on the exemplar's pieces, what each
+// resize changes lies in one head or tail piece of every grid resized after it; grids keeping
+// their exemplar's counts are left out unless all do.
+std::vector<GridResize> resize_order(const ShapeGrammar& grammar, std::vector<GridResize> resizes) {
+  for (std::size_t a = 0; a < resizes.size(); ++a) {
+    if (resizes[a].grid >= grammar.grids.size()) throw InputError(fmt::format("no grid {}", resizes[a].grid + 1));
+    for (std::size_t b = 0; b < a; ++b)
+      if (resizes[a].grid == resizes[b].grid)
+        throw InputError(fmt::format("grid {} is given twice", grammar.grids[resizes[a].grid].rule.name));
+  }
+  if (resizes.empty()) throw InputError("no grid to resize");
+  std::vector<GridResize> changing;
+  for (const GridResize& r : resizes) check_counts(grammar.grids[r.grid].rule, r.counts);
+  for (const GridResize& r : resizes)
+    if (changes_counts(grammar.grids[r.grid].rule, r.counts)) changing.push_back(r);
+  if (changing.empty()) changing.push_back(resizes.front());
+  std::stable_sort(changing.begin(), changing.end(), [&](const GridResize& a, const GridResize& b) {
+    const bool whole_a = keeps_parts_whole(grammar.grids[a.grid].rule), whole_b = keeps_parts_whole(grammar.grids[b.grid].rule);
+    return whole_a != whole_b ? whole_a : a.grid < b.grid;
+  });
+  if (changing.size() > 1 && keeps_parts_whole(grammar.grids[changing[1].grid].rule))
+    throw InputError(fmt::format("grids {} and {} both keep separate parts whole: resize one, analyze the result, then "
+                                 "resize the other",
+                                 grammar.grids[changing[0].grid].rule.name, grammar.grids[changing[1].grid].rule.name));
+  return feasible_order(grammar, std::move(changing));
 }
 
 // Applies the resizes in order: `resize` builds a result from a grid's pieces, `recut` cuts a

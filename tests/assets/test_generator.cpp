@@ -48,6 +48,7 @@ TEST_CASE("every clean asset is one closed, outward, non-degenerate, self-inters
 TEST_CASE("other parameters give sound models too", "[assets]") {
   const std::vector<std::pair<std::string, nlohmann::json>> cases = {
       {"fence", {{"n", 1}, {"pitch", 0.6}}},
+      {"fence", {{"n", 2}, {"after_gate", 3}}},
       {"facade", {{"columns", 1}, {"rows", 1}, {"column_pitch", 1.7}, {"row_pitch", 2.8}}},
       {"shelf", {{"columns", 1}, {"rows", 2}, {"cell_width", 0.8}}},
       {"pipe_tree", {{"depth", 0}}},
@@ -147,6 +148,23 @@ TEST_CASE("fence(9) is fence(4) with exactly five more units", "[assets]") {
   const double pitch = small.ground_truth["repetitions"][0]["pitch"]["vector"][0].get<double>();
   CHECK(large.mesh.bounds().size().x() - small.mesh.bounds().size().x() == Approx(5 * pitch).epsilon(1e-12));
   CHECK(large.mesh.bounds().size().z() == small.mesh.bounds().size().z());
+}
+
+TEST_CASE("a fence with a gate grows by whole units on either side of it", "[assets]") {
+  const Asset small = make_asset("fence", {{"n", 3}, {"after_gate", 4}});
+  const Asset larger = make_asset("fence", {{"n", 5}, {"after_gate", 6}});
+  const nlohmann::json& reps = small.ground_truth["repetitions"];
+  REQUIRE(reps.size() == 2);
+  CHECK(reps[0]["count"] == 3);
+  CHECK(reps[1]["count"] == 4);
+  // Both stretches repeat the same unit (inner post and rails, mid-bay to mid-bay).
+  const double unit = reps[0]["unit_area"].get<double>();
+  CHECK(reps[1]["unit_area"].get<double>() == Approx(unit).epsilon(1e-12));
+  CHECK(relative_difference(larger.mesh.area() - small.mesh.area(), 4 * unit) < 1e-9);
+  CHECK(larger.mesh.bounds().size().x() - small.mesh.bounds().size().x() == Approx(4 * 2.0).epsilon(1e-12));
+  // Without a gate the fence is the plain one.
+  CHECK(make_asset("fence", {{"n", 3}, {"after_gate", 0}}).mesh.triangles == make_asset("fence", {{"n", 3}}).mesh.triangles);
+  CHECK_THROWS_AS(make_asset("fence", {{"n", 3}, {"after_gate", -1}}), dg::InputError);
 }
 
 TEST_CASE("2-grids grow by whole columns, rows and cells", "[assets]") {

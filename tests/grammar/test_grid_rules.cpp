@@ -65,6 +65,34 @@ TEST_CASE("fence(n): a 1-grid along the post pitch whose count is the number of 
   }
 }
 
+TEST_CASE("fence with a gate: one 1-grid per stretch, each counting its own inner posts", "[grammar][grid]") {
+  for (const auto& [n, after_gate] : {std::pair{3, 4}, std::pair{5, 2}}) {
+    INFO("fence " << n << ", gate, " << after_gate);
+    const nlohmann::json params = {{"n", n}, {"after_gate", after_gate}};
+    const nlohmann::json truth = dg::assets::make_asset("fence", params).ground_truth;
+    const Analysis a = analyze_asset("fence", params);
+    REQUIRE(a.grids.size() == 2);
+    // Ground truth (assets/README.md): the first stretch's end posts stand at x = 0 and
+    // (n + 1) pitch, the second's from (n + 2.5) pitch on; each grid's planes lie in one stretch.
+    const double pitch = 2.0, gate_post = (n + 1) * pitch, second_start = gate_post + 1.5 * pitch;
+    std::map<int, int> count_by_stretch;
+    for (const dg::GridRule& grid : a.grids) {
+      REQUIRE(grid.directions.size() == 1);
+      const dg::GridDirection* along = direction_along(grid, Vec3(pitch, 0, 0));
+      REQUIRE(along != nullptr);
+      const double first = along->direction.x() > 0 ? along->cut : -along->cut - along->count * pitch;
+      const double last = first + along->count * pitch;
+      const int stretch = last <= gate_post ? 0 : first >= second_start ? 1 : -1;
+      CHECK(stretch >= 0);
+      count_by_stretch[stretch] = along->count;
+    }
+    CHECK(count_by_stretch == std::map<int, int>{{0, truth["repetitions"][0]["count"].get<int>()},
+                                                 {1, truth["repetitions"][1]["count"].get<int>()}});
+    CHECK(count_by_stretch[0] == n);
+    CHECK(count_by_stretch[1] == after_gate);
+  }
+}
+
 TEST_CASE("fence(9) with posts set up to 0.15 eps out of line: the whole grid needs a wider tolerance", "[grammar][grid]") {
   dg::Model model;
   model.mesh = dg::assets::make_asset("fence", {{"n", 9}}).mesh;

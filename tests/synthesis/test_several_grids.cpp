@@ -197,3 +197,69 @@ TEST_CASE("resize CLI: several grids in one run", "[synthesis][grid][cli]") {
   CHECK_THAT(twice.output, Catch::Contains("given twice"));
   CHECK_FALSE(std::filesystem::exists(folder / "twice.obj"));
 }
+
+namespace {
+
+// The grammar of fence(n) with a gate and `after_gate` inner posts after it: one grid per
+// stretch (the one with more units is grid1).
+struct GatedFence {
+  dg::ShapeGrammar grammar;
+  int n = 0, after_gate = 0;
+  std::size_t first = 0, second = 1;  // the grids of the stretches before and after the gate
+};
+
+GatedFence gated_fence(int n, int after_gate) {
+  GatedFence g{dg::test::asset_grammar("fence", {{"n", n}, {"after_gate", after_gate}}, false), n, after_gate};
+  REQUIRE(g.grammar.grids.size() == 2);
+  const dg::GridDirection& grid1 = g.grammar.grids[0].rule.directions.front();
+  if (grid1.direction.x() * (grid1.cut + 0.5 * grid1.pitch) > 0.5 * (n + 1) * 2.0) std::swap(g.first, g.second);
+  REQUIRE(g.grammar.grids[g.first].rule.directions.front().count == n);
+  REQUIRE(g.grammar.grids[g.second].rule.directions.front().count == after_gate);
+  return g;
+}
+
+dg::TriangleMesh gated(int n, int after_gate) {
+  return dg::assets::make_asset("fence", {{"n", n}, {"after_gate", after_gate}}).mesh;
+}
+
+}  // namespace
+
+TEST_CASE("fence with a gate: both stretches resized in one run, in the order that keeps each change in a stored piece",
+          "[synthesis][grid]") {
+  // Growing the first stretch moves the gate and the whole second stretch, so the second is
+  // resized first whatever order the resizes are given in (grid1 is either).
+  for (const GatedFence& g : {gated_fence(3, 4), gated_fence(4, 3)}) {
+    for (const auto& [first, second] : {std::pair{5, 6}, std::pair{2, 7}, std::pair{6, 1}}) {
+      INFO("fence " << g.n << ", gate, " << g.after_gate << " resized to " << first << " and " << second);
+      const dg::TriangleMesh expected = gated(first, second);
+      for (const std::vector<dg::GridResize>& resizes :
+           {std::vector<dg::GridResize>{{g.first, {first}}, {g.second, {second}}},
+            std::vector<dg::GridResize>{{g.second, {second}}, {g.first, {first}}}}) {
+        const dg::TriangleMesh resized = dg::resize_grids(g.grammar, resizes);
+        CHECK(dg::is_closed_and_oriented(resized));
+        CHECK(dg::test::hausdorff_distance(resized, expected) < 1e-3 * g.grammar.eps);
+        CHECK(resized.area() == Approx(expected.area()).epsilon(1e-6));
+      }
+    }
+    // Each stretch alone.
+    CHECK(dg::test::hausdorff_distance(dg::resize_grids(g.grammar, {{g.first, {7}}}), gated(7, g.after_gate)) <
+          1e-3 * g.grammar.eps);
+    CHECK(dg::test::hausdorff_distance(dg::resize_grids(g.grammar, {{g.second, {9}}}), gated(g.n, 9)) < 1e-3 * g.grammar.eps);
+  }
+}
+
+TEST_CASE("fence with a gate: each variant draws and resizes both stretches", "[synthesis][variants]") {
+  const GatedFence g = gated_fence(4, 3);
+  std::set<std::pair<int, int>> drawn;
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    const dg::VariantPlan plan = dg::plan_variant(g.grammar, 11, i);
+    REQUIRE(plan.grid_counts.size() == 2);
+    const dg::Variant variant = dg::build_variant(g.grammar, plan);
+    CHECK(variant.one_grid_only.empty());
+    CHECK(variant.grid_counts == plan.grid_counts);
+    const int first = plan.grid_counts[g.first].front(), second = plan.grid_counts[g.second].front();
+    drawn.emplace(first, second);
+    CHECK(dg::test::hausdorff_distance(variant.mesh, gated(first, second)) < g.grammar.eps);
+  }
+  CHECK(drawn.size() > 1);
+}
