@@ -41,10 +41,7 @@ bool usable_name(const std::string& name) { return name.find_first_of(",*'\"") =
 // Counts of the grids of a prepared model.
 std::vector<std::vector<int>> grid_counts(const PreparedModel& prepared, const SymmetryResult& symmetries) {
   std::vector<std::vector<int>> counts;
-  for (const GridRule& grid : find_grids(prepared, symmetries)) {
-    counts.emplace_back();
-    for (const GridDirection& d : grid.directions) counts.back().push_back(d.count);
-  }
+  for (const GridRule& grid : find_grids(prepared, symmetries)) counts.push_back(exemplar_counts(grid));
   return counts;
 }
 

@@ -173,10 +173,7 @@ Variant build_variant(const ShapeGrammar& grammar, const VariantPlan& plan, cons
     resizes = {resizes[plan.grid]};
     build();
   }
-  for (const GridWithPieces& grid : grammar.grids) {
-    variant.grid_counts.emplace_back();
-    for (const GridDirection& d : grid.rule.directions) variant.grid_counts.back().push_back(d.count);
-  }
+  for (const GridWithPieces& grid : grammar.grids) variant.grid_counts.push_back(exemplar_counts(grid.rule));
   for (const GridResize& r : resizes) {
     variant.changed = variant.changed || variant.grid_counts[r.grid] != r.counts;
     variant.grid_counts[r.grid] = r.counts;

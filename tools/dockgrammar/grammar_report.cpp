@@ -180,11 +180,7 @@ std::string grid_motion_text(const GridDirection& d, const Vec3& origin) {
 // Offset of a direction's first cut plane along its direction in the model file's coordinates.
 double first_cut(const GridDirection& d, const Vec3& origin) { return d.cut + d.direction.dot(origin); }
 
-std::string counts_text(const GridRule& grid) {
-  std::string text;
-  for (const GridDirection& d : grid.directions) text += fmt::format("{}{}", text.empty() ? "" : "x", d.count);
-  return text;
-}
+std::string counts_text(const GridRule& grid) { return fmt::format("{}", fmt::join(exemplar_counts(grid), "x")); }
 
 // Components with 6 significant digits; rounding noise (below 1e-9 of the length) and -0 show as 0.
 std::string vec(const Vec3& v) {
