@@ -26,13 +26,32 @@ bool changes_counts(const GridRule& grid, const std::vector<int>& counts) {
   return counts.size() != grid.directions.size();  // resize_grid reports the mismatch
 }
 
+// The directions of `grid` whose count `counts` changes, as a grid of their own, with their
+// counts: along a direction kept at the exemplar's count every piece stays where it is, so a
+// resize that changes only some directions is the resize of this grid (its slabs along the
+// changed directions are copies of each other as wholes).
+std::pair<GridRule, std::vector<int>> changing_directions(const GridRule& grid, const std::vector<int>& counts) {
+  GridRule changing = grid;
+  changing.directions.clear();
+  std::vector<int> changing_counts;
+  for (std::size_t i = 0; i < grid.directions.size(); ++i)
+    if (counts[i] != grid.directions[i].count) {
+      changing.directions.push_back(grid.directions[i]);
+      changing_counts.push_back(counts[i]);
+    }
+  return {std::move(changing), std::move(changing_counts)};
+}
+
 // Positions a resize of `grid` to `counts` moves or adds: the vertices (points) of its pieces
-// that are not head pieces in every direction, where the exemplar's counts and `counts` put them.
+// that are not head pieces in every direction whose count changes, where the exemplar's counts
+// and `counts` put them.
 std::vector<Vec3> changed_positions(const GridRule& grid, const std::vector<GridPiece>& pieces, const std::vector<int>& counts) {
   const std::vector<int> exemplar_counts = dg::exemplar_counts(grid);
   std::vector<Vec3> positions;
   for (const GridPiece& piece : pieces) {
-    if (std::all_of(piece.classes.begin(), piece.classes.end(), [](int c) { return c == 0; })) continue;
+    bool stays = true;
+    for (std::size_t i = 0; i < counts.size(); ++i) stays = stays && (counts[i] == exemplar_counts[i] || piece.classes[i] == 0);
+    if (stays) continue;
     for (const std::vector<int>* c : {&std::as_const(exemplar_counts), &counts})
       for (const RigidTransform& placement : piece_placements(grid, piece, *c)) {
         for (const Vec3& p : piece.mesh.positions) positions.push_back(placement.apply(p));
@@ -65,7 +84,7 @@ bool stays_in_stored_pieces(const ShapeGrammar& grammar, const std::vector<GridR
                             const std::vector<std::vector<Vec3>>& changes) {
   std::vector<Vec3> changed;
   for (std::size_t step = 0; step < order.size(); ++step) {
-    const GridRule& grid = grammar.grids[order[step].grid].rule;
+    const GridRule grid = changing_directions(grammar.grids[order[step].grid].rule, order[step].counts).first;
     if (step > 0 && !changed.empty()) {
       const std::optional<std::vector<int>> classes = shared_classes(grid, changed);
       if (!classes || std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0 && c != 2; })) return false;
@@ -138,9 +157,12 @@ Geometry resize_in_order(const ShapeGrammar& grammar, const std::vector<GridResi
   std::string changed_by;     // the grids that changed them
   for (std::size_t step = 0; step < order.size(); ++step) {
     const GridWithPieces& grid = grammar.grids[order[step].grid];
+    // The first resize uses the stored pieces; later ones cut the result along the planes of the
+    // directions they change only.
+    const auto [rule, counts] = step == 0 ? std::pair{grid.rule, order[step].counts} : changing_directions(grid.rule, order[step].counts);
     std::vector<GridPiece> recut_pieces;
     if (step > 0 && !changed.empty()) {
-      const std::optional<std::vector<int>> classes = shared_classes(grid.rule, changed);
+      const std::optional<std::vector<int>> classes = shared_classes(rule, changed);
       const bool stored = classes && std::all_of(classes->begin(), classes->end(), [](int c) { return c == 0 || c == 2; });
       if (!stored)
         throw InputError(fmt::format("grids {} and {} overlap: resizing {} changes the model inside more than one piece, "
@@ -149,10 +171,10 @@ Geometry resize_in_order(const ShapeGrammar& grammar, const std::vector<GridResi
                                      changed_by, grid.rule.name, changed_by, grid.rule.name));
       if (std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; })) changed.clear();  // moved with a tail
     }
-    if (step > 0) recut_pieces = recut(result, grid.rule);
+    if (step > 0) recut_pieces = recut(result, rule);
     const std::vector<GridPiece>& pieces = step == 0 ? grid.pieces : recut_pieces;
-    result = resize(grid.rule, pieces, order[step].counts);
-    const std::vector<Vec3> moved = changed_positions(grid.rule, pieces, order[step].counts);
+    result = resize(rule, pieces, counts);
+    const std::vector<Vec3> moved = changed_positions(rule, pieces, counts);
     changed.insert(changed.end(), moved.begin(), moved.end());
     changed_by += (changed_by.empty() ? "" : " and ") + grid.rule.name;
   }

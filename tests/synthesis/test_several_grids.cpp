@@ -263,3 +263,51 @@ TEST_CASE("fence with a gate: each variant draws and resizes both stretches", "[
   }
   CHECK(drawn.size() > 1);
 }
+
+namespace {
+
+// Two facade(columns x 3) wings on either side of a plain 6 m tower, 18 m high: the left wing's
+// columns and the floors of both form a 2-grid, the right wing's columns a further 1-grid.
+dg::TriangleMesh winged(int left_columns, int right_columns, int rows, double tower_height) {
+  const double pitch = 3.0;  // the facade's default column pitch
+  dg::TriangleMesh mesh = dg::assets::make_asset("facade", {{"columns", left_columns}, {"rows", rows}}).mesh;
+  const double tower = 2.0 + left_columns * pitch;  // the wall's right end (1 m margins)
+  dg::test::append(mesh, dg::test::make_box(dg::Vec3(tower, -0.6, 0.0), dg::Vec3(tower + 6.0, 0.6, tower_height)));
+  dg::test::append(mesh, dg::transformed(dg::assets::make_asset("facade", {{"columns", right_columns}, {"rows", rows}}).mesh,
+                                         dg::RigidTransform{dg::Mat3::Identity(), dg::Vec3(tower + 6.0, 0.0, 0.0)}));
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("two facade wings beside a tower: a resize that keeps the floors widens both wings in one run",
+          "[synthesis][grid]") {
+  dg::Model model;
+  model.mesh = winged(3, 3, 3, 18.0);
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(std::move(model), false);
+  REQUIRE(grammar.grids.size() == 2);
+  REQUIRE(grammar.grids[0].rule.directions.size() == 2);
+  REQUIRE(grammar.grids[1].rule.directions.size() == 1);
+  // grid1: columns of one wing (x) and floors (z); grid2: the other wing's columns.
+  const std::size_t columns = std::abs(grammar.grids[0].rule.directions[0].direction.x()) > 0.99 ? 0 : 1;
+  const dg::GridDirection& grid1_columns = grammar.grids[0].rule.directions[columns];
+  REQUIRE(std::abs(grammar.grids[1].rule.directions[0].direction.x()) > 0.99);
+  CHECK(grid1_columns.count == 3);
+  CHECK(grammar.grids[0].rule.directions[1 - columns].count == 3);
+  CHECK(grammar.grids[1].rule.directions[0].count == 3);
+  const bool grid1_left = grid1_columns.direction.x() * (grid1_columns.cut + 0.5 * grid1_columns.pitch) < 13.0;
+  auto grid1_counts = [&](int wing_columns, int floors) {
+    return columns == 0 ? std::vector<int>{wing_columns, floors} : std::vector<int>{floors, wing_columns};
+  };
+  // Five columns in grid1's wing and six in the other, the floors kept: one run.
+  const dg::TriangleMesh wider = dg::resize_grids(grammar, {{0, grid1_counts(5, 3)}, {1, {6}}});
+  const dg::TriangleMesh expected = grid1_left ? winged(5, 6, 3, 18.0) : winged(6, 5, 3, 18.0);
+  CHECK(dg::test::hausdorff_distance(wider, expected) < 1e-3 * grammar.eps);
+  CHECK(wider.area() == Approx(expected.area()).epsilon(1e-6));
+  // Two more floors run through both wings and the tower.
+  const dg::TriangleMesh taller = dg::resize_grids(grammar, {{0, grid1_counts(3, 5)}});
+  CHECK(dg::test::hausdorff_distance(taller, winged(3, 3, 5, 24.0)) < 1e-3 * grammar.eps);
+  // More floors and a wider second wing: the floors' planes cross the second wing's units, and
+  // its units cross every floor, so neither order keeps a change in one stored piece.
+  CHECK_THROWS_WITH(dg::resize_grids(grammar, {{0, grid1_counts(3, 5)}, {1, {6}}}), Catch::Contains("overlap"));
+}
