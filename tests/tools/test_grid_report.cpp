@@ -1,6 +1,8 @@
-// analyze's report when no grid is found: it names the repeating translation a reader most
-// likely expected one from, and why its units could not be cut apart.
+// analyze's report on grids: when none is found it names the repeating translation a reader most
+// likely expected one from, and why its units could not be cut apart; a further run of a grid's
+// motion says which grid's it is.
 
+#include "assets/generator/asset.h"
 #include "geometry/model_io.h"
 #include "support/cli_run.h"
 #include "support/shapes.h"
@@ -63,4 +65,15 @@ TEST_CASE("analyze: with no grid, the report's grid section names the translatio
   REQUIRE(named != std::string::npos);
   CHECK(section.find("repeats of |t| = 2)", named) != std::string::npos);
   CHECK(report.find("## Not yet built") != std::string::npos);
+}
+
+TEST_CASE("analyze: a further run of a grid's motion says so, with where both runs' planes lie", "[tools][grids]") {
+  // fence(3), a gate, then 4 more inner posts (pitch 2): the second stretch starts at x = 11.
+  const std::string report = analyze_report(dg::assets::make_asset("fence", {{"n", 3}, {"after_gate", 4}}).mesh, "gated");
+  INFO(report);
+  const std::size_t grid2 = report.find("### grid2 (1-grid");
+  REQUIRE(grid2 != std::string::npos);
+  CHECK(report.find("A further run along the motion of grid1's direction 1: its planes lie from", grid2) ==
+        report.find('\n', grid2) + 2);
+  CHECK(report.find("A further run") == report.rfind("A further run"));  // grid1 is the first run
 }

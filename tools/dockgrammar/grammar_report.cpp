@@ -182,6 +182,26 @@ double first_cut(const GridDirection& d, const Vec3& origin) { return d.cut + d.
 
 std::string counts_text(const GridRule& grid) { return fmt::format("{}", fmt::join(exemplar_counts(grid), "x")); }
 
+// For a grid whose motion is that of a direction of an earlier grid (a further run along it,
+// grammar/grid_rules.h): which one, and where along the motion both runs' planes lie ("along the
+// motion of ..."). Else empty.
+std::string further_run_text(const AnalysisReport& report, std::size_t grid_index) {
+  const std::vector<GridWithPieces>& grids = report.grammar.grids;
+  if (grids[grid_index].rule.directions.size() != 1) return "";
+  const GridDirection& run = grids[grid_index].rule.directions.front();
+  const Vec3& origin = report.prepared.origin;
+  for (std::size_t g = 0; g < grid_index; ++g)
+    for (std::size_t i = 0; i < grids[g].rule.directions.size(); ++i) {
+      const GridDirection& d = grids[g].rule.directions[i];
+      if (d.symmetry != run.symmetry) continue;
+      return fmt::format("along the motion of {}'s direction {}: its planes lie from {:.6g} to {:.6g} along "
+                         "it, {}'s from {:.6g} to {:.6g}, and what lies between is mostly not a copy of the units",
+                         grids[g].rule.name, i + 1, first_cut(run, origin), first_cut(run, origin) + run.count * run.pitch,
+                         grids[g].rule.name, first_cut(d, origin), first_cut(d, origin) + d.count * d.pitch);
+    }
+  return "";
+}
+
 // Components with 6 significant digits; rounding noise (below 1e-9 of the length) and -0 show as 0.
 std::string vec(const Vec3& v) {
   const double noise = 1e-9 * v.norm();
@@ -444,9 +464,11 @@ std::string analysis_text(const AnalysisReport& report) {
   else
     out += fmt::format("symmetries: {} in {} families\n", report.symmetries.symmetries.size(), report.symmetries.families.size());
   if (report.grammar.grids.empty()) out += "grids: none found\n";
-  for (const GridWithPieces& grid : report.grammar.grids) {
+  for (std::size_t g = 0; g < report.grammar.grids.size(); ++g) {
+    const GridWithPieces& grid = report.grammar.grids[g];
     out += fmt::format("grid {}: {}-grid, counts {} (resize with --grid {}={})\n", grid.rule.name, grid.rule.directions.size(),
                        counts_text(grid.rule), grid.rule.name, counts_text(grid.rule));
+    if (const std::string further = further_run_text(report, g); !further.empty()) out += fmt::format("  a further run {}\n", further);
     for (const GridDirection& d : grid.rule.directions)
       out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}{}\n",
                          grid_motion_text(d, report.prepared.origin), vec(d.direction), d.pitch, d.count,
@@ -578,10 +600,12 @@ void write_analysis_report(const AnalysisReport& report) {
   md += strongest_translation_text(report);
   if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
   if (const std::string hint = material_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
-  for (const GridWithPieces& grid : report.grammar.grids) {
-    md += fmt::format(
-        "### {} ({}-grid, counts {})\n\n| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n",
-        grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
+  for (std::size_t g = 0; g < report.grammar.grids.size(); ++g) {
+    const GridWithPieces& grid = report.grammar.grids[g];
+    md += fmt::format("### {} ({}-grid, counts {})\n\n", grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));
+    if (const std::string further = further_run_text(report, g); !further.empty())
+      md += fmt::format("A further run {}.\n\n", further);
+    md += "| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
       md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d, report.prepared.origin),
