@@ -21,6 +21,13 @@ struct StageTiming {
   double seconds = 0.0;
 };
 
+/// Sum of the seconds of `timings`.
+inline double total_seconds(const std::vector<StageTiming>& timings) {
+  double seconds = 0.0;
+  for (const StageTiming& t : timings) seconds += t.seconds;
+  return seconds;
+}
+
 /// Radius (in eps) of the neighbourhoods PreparedModel::cloud_sampling is measured in: about 40
 /// points of a cloud with 3 points per occupied voxel.
 inline constexpr double kCloudStatisticsRadius = 2.0;

@@ -103,15 +103,14 @@ bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& 
          grids_found == 0 && !options.match_materials && options.same_materials.empty();
 }
 
-std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const PrepareOptions& options,
-                                          const SymmetryOptions& symmetry_options, std::size_t grids_found,
-                                          const ProgressCallback& progress) {
+std::optional<MaterialHint> material_grouping(const PreparedModel& prepared, const PrepareOptions& options,
+                                              const SymmetryOptions& symmetry_options, std::size_t grids_found,
+                                              const ProgressCallback& progress) {
   if (!material_hint_applies(prepared, options, grids_found)) return std::nullopt;
   const std::vector<Material>& materials = prepared.model.materials;
   report_progress(progress, "material hint", 0.0);
-  // A lighter search first (the repeats sought have strong support): which materials the
-  // translations swap, and whether matching materials in those groups gives any grid; only
-  // then the full search, whose grids the hint reports.
+  // A lighter search (the repeats sought have strong support): which materials the translations
+  // swap, and whether matching materials in those groups gives any grid.
   SymmetryOptions light = symmetry_options;
   light.candidates.max_pairs = kLightPairs;
   light.max_verified = kLightVerified;
@@ -123,7 +122,7 @@ std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const P
   const SymmetryResult painted_symmetries = detect_symmetries(painted, light);
   const std::vector<std::vector<std::uint32_t>> groups = interchangeable_materials(material_swaps(painted, painted_symmetries));
   MaterialHint hint;
-  PrepareOptions grouped = matched;
+  hint.options = matched;
   for (const std::vector<std::uint32_t>& group : groups) {
     std::vector<std::string> names;
     std::string list;
@@ -133,16 +132,25 @@ std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const P
       list += (list.empty() ? "" : ",") + materials[m].name;
     }
     hint.groups.push_back(std::move(names));
-    grouped.same_materials.push_back(std::move(list));
+    hint.options.same_materials.push_back(std::move(list));
   }
-  report_progress(progress, "material hint", 0.3);
-  const PreparedModel regrouped = groups.empty() ? PreparedModel{} : prepare_model(prepared.model, grouped);
+  report_progress(progress, "material hint", 0.5);
+  const PreparedModel regrouped = groups.empty() ? PreparedModel{} : prepare_model(prepared.model, hint.options);
   const PreparedModel& tried = groups.empty() ? painted : regrouped;
-  if (grid_counts(tried, groups.empty() ? painted_symmetries : detect_symmetries(tried, light)).empty()) return std::nullopt;
-  report_progress(progress, "material hint", 0.6);
-  hint.grid_counts = grid_counts(tried, detect_symmetries(tried, symmetry_options));
+  const bool grids = !grid_counts(tried, groups.empty() ? painted_symmetries : detect_symmetries(tried, light)).empty();
   report_progress(progress, "material hint", 1.0);
-  if (hint.grid_counts.empty()) return std::nullopt;
+  if (!grids) return std::nullopt;
+  return hint;
+}
+
+std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const PrepareOptions& options,
+                                          const SymmetryOptions& symmetry_options, std::size_t grids_found,
+                                          const ProgressCallback& progress) {
+  std::optional<MaterialHint> hint = material_grouping(prepared, options, symmetry_options, grids_found, progress);
+  if (!hint) return std::nullopt;
+  const PreparedModel grouped = prepare_model(prepared.model, hint->options);
+  hint->grid_counts = grid_counts(grouped, detect_symmetries(grouped, symmetry_options));
+  if (hint->grid_counts.empty()) return std::nullopt;
   return hint;
 }
 

@@ -23,6 +23,12 @@ struct MaterialHint {
   std::vector<std::vector<std::string>> groups;
   /// Per grid found with the groups: its counts (one per direction).
   std::vector<std::vector<int>> grid_counts;
+  /// The options that match the materials so: the analysed ones with match_materials set and
+  /// one same_materials entry per group.
+  PrepareOptions options;
+  /// Whether analyze went on with `options` (its grammar's grids are these) instead of only
+  /// naming them.
+  bool applied = false;
 };
 
 /// Where each material lands under a model's translations: swaps[a][b] is the area of material
@@ -51,6 +57,13 @@ bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& 
 /// counts of the full search's grids, when there are any. Nothing
 /// otherwise (and nothing for point clouds, models with fewer than two materials, or group
 /// names that `--same-material` could not take: with a comma, an asterisk or a quote).
+/// The first, lighter part of material_hint: the groups and options (grid_counts empty) when
+/// the lighter search with them gives a grid, else nothing. For a caller that goes on with the
+/// full search itself (analyze, which then analyses the model with those options).
+std::optional<MaterialHint> material_grouping(const PreparedModel& prepared, const PrepareOptions& options,
+                                              const SymmetryOptions& symmetry_options, std::size_t grids_found,
+                                              const ProgressCallback& progress = {});
+
 std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const PrepareOptions& options,
                                           const SymmetryOptions& symmetry_options, std::size_t grids_found,
                                           const ProgressCallback& progress = {});

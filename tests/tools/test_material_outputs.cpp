@@ -6,10 +6,12 @@
 #include "grammar/grammar_file.h"
 #include "support/asset_grammar.h"
 #include "support/cli_run.h"
+#include "support/corpus.h"
 #include "support/material_models.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -149,30 +151,57 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   dg::write_mesh_with_materials(folder / "stripes.obj", wall.mesh, wall.materials);
   const std::string model = (folder / "stripes.obj").string();
 
-  // Geometry alone finds no grid on a flat wall; the summary names the tints that swap and the
-  // option that gives the grid (measured: material_hint).
-  const dg::test::CliRun geometric = dg::test::run_cli("analyze " + model + " -q -o " + (folder / "plain").string(), folder);
+  // Geometry alone finds no grid on a flat wall; with --geometry-only the summary names the tints
+  // that swap and the option that gives the grid (measured: material_hint).
+  const std::string plain_folder = (folder / "plain").string();
+  const dg::test::CliRun geometric = dg::test::run_cli("analyze " + model + " --geometry-only -q -o " + plain_folder, folder);
   REQUIRE(geometric.status == 0);
   CHECK(geometric.output.find("grids: none found") != std::string::npos);
+  CHECK(geometric.output.find("hint: the model's repeats are drawn in materials") != std::string::npos);
   CHECK(geometric.output.find("--same-material 'glass_green,glass_blue' gives a 1-grid") != std::string::npos);
   std::ifstream plain_report(folder / "plain" / "stripes.report.md");
   const std::string plain_text((std::istreambuf_iterator<char>(plain_report)), std::istreambuf_iterator<char>());
   CHECK(plain_text.find("`--same-material 'glass_green,glass_blue'` gives a 1-grid") != std::string::npos);
   // The report's stage times follow the pipeline, the hint's search between grids and docking sites.
-  std::size_t previous = 0;
-  for (const char* stage : {"- load:", "- voxel surface:", "- symmetry candidates:", "- grid rules:", "- material hint:",
-                            "- docking sites:", "- context-free rules:"}) {
-    const std::size_t at = plain_text.find(stage);
-    REQUIRE(at != std::string::npos);
-    CHECK(at > previous);
-    previous = at;
-  }
+  auto stages_in_order = [](const std::string& text, const std::vector<std::string>& stages) {
+    std::size_t previous = 0;
+    for (const std::string& stage : stages) {
+      INFO(stage);
+      const std::size_t at = text.find(stage);
+      REQUIRE(at != std::string::npos);
+      CHECK(at > previous);
+      previous = at;
+    }
+  };
+  stages_in_order(plain_text, {"- load:", "- voxel surface:", "- symmetry candidates:", "- grid rules:", "- material hint:",
+                               "- docking sites:", "- context-free rules:"});
   const dg::test::CliRun geometric_json =
-      dg::test::run_cli("analyze " + model + " -q --json -o " + (folder / "plain").string(), folder);
+      dg::test::run_cli("analyze " + model + " --geometry-only -q --json -o " + plain_folder, folder);
   const nlohmann::json hint = nlohmann::json::parse(geometric_json.output)["material_hint"];
   CHECK(hint["same_material"] == nlohmann::json::array({nlohmann::json::array({"glass_green", "glass_blue"})}));
   CHECK(hint["grid_counts"].size() == 1);
+  CHECK(hint["applied"] == false);
+  CHECK(nlohmann::json::parse(geometric_json.output)["grids"].empty());
   CHECK(nlohmann::json::parse(geometric_json.output)["timings_s"].contains("material hint"));
+
+  // By default analyze goes on with the tints grouped, and says so: the grammar holds the grid
+  // that --same-material gives.
+  const dg::test::CliRun applied = dg::test::run_cli("analyze " + model + " -q -o " + (folder / "applied").string(), folder);
+  REQUIRE(applied.status == 0);
+  CHECK(applied.output.find("grid grid1: 1-grid") != std::string::npos);
+  CHECK(applied.output.find("materials: geometry alone gave no grid; the model's repeats are drawn in materials, some of "
+                            "which take one another's place at random (glass_green,glass_blue), so analyze went on as with "
+                            "--same-material 'glass_green,glass_blue', which gives a 1-grid") != std::string::npos);
+  CHECK(applied.output.find("--geometry-only keeps to geometry") != std::string::npos);
+  std::ifstream applied_report(folder / "applied" / "stripes.report.md");
+  const std::string applied_text((std::istreambuf_iterator<char>(applied_report)), std::istreambuf_iterator<char>());
+  CHECK(applied_text.find("`glass_green`, `glass_blue` count as one") != std::string::npos);
+  CHECK(applied_text.find("Materials: geometry alone gave no grid;") != std::string::npos);
+  stages_in_order(applied_text, {"- load:", "- symmetry candidates:", "- analysis by geometry alone (no grid):",
+                                 "- material hint:", "- grid rules:", "- docking sites:", "- context-free rules:"});
+  const dg::ShapeGrammar applied_grammar = dg::read_grammar(folder / "applied" / "stripes.grammar.json");
+  const dg::ShapeGrammar plain_grammar = dg::read_grammar(folder / "plain" / "stripes.grammar.json");
+  CHECK(plain_grammar.grids.empty());
 
   const dg::test::CliRun info = dg::test::run_cli("info " + model + " --json --same-material 'glass_*'", folder);
   REQUIRE(info.status == 0);
@@ -191,6 +220,9 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
   for (const nlohmann::json& t : result["grids"][0]["transforms"])
     two_stripes = two_stripes || std::abs(std::abs(t[1][3].get<double>()) - 2 * dg::test::kStripeHeight) < 1e-6;
   CHECK(two_stripes);
+  // The grid analyze went on with is the one the option gives.
+  REQUIRE(applied_grammar.grids.size() == 1);
+  CHECK(dg::exemplar_counts(applied_grammar.grids[0].rule) == result["grids"][0]["counts"].get<std::vector<int>>());
   std::ifstream report(folder / "out" / "stripes.report.md");
   const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(text.find("`glass_green`, `glass_blue` count as one") != std::string::npos);
@@ -208,5 +240,26 @@ TEST_CASE("materials: --same-material makes random tints one material for info a
       folder);
   CHECK(bare.status == 2);
   CHECK(bare.output.find("no material matches 'glass' (the model's materials: none)") != std::string::npos);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("corpus: analyze gives the Hochhaus Asemwald its 2-grid of floors, its window tints grouped by itself",
+          "[tools][materials][corpus]") {
+  const auto path = dg::test::corpus_file_if_present("meshes/arch-fg-hochhaus-asemwald/hochhaus_asemwald.obj");
+  if (!path) return;
+  // Its facades are flat: geometry alone gives no grid, the tints grouped give floors x bays.
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-hochhaus-materials");
+  const dg::test::CliRun run = dg::test::run_cli("analyze " + path->string() + " -q --json -o " + folder.string(), folder);
+  REQUIRE(run.status == 0);
+  const nlohmann::json result = nlohmann::json::parse(run.output);
+  REQUIRE(result["grids"].size() == 1);
+  CHECK(result["grids"][0]["dims"] == 2);
+  std::vector<int> counts = result["grids"][0]["counts"].get<std::vector<int>>();
+  std::sort(counts.begin(), counts.end());
+  CHECK(counts == std::vector<int>{1, 19});  // as --same-material 'glas*,jalousie*' gives (test_grid_rules.cpp)
+  CHECK(result["match_materials"] == true);
+  CHECK(result["material_hint"]["applied"] == true);
+  CHECK(result["material_groups"] ==
+        nlohmann::json::array({nlohmann::json::array({"glas1", "glas2", "glas3", "glas4", "jalousie1", "jalousie2"})}));
   std::filesystem::remove_all(folder);
 }

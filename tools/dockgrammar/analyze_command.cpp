@@ -34,6 +34,7 @@ void add_analyze_command(CLI::App& app) {
     std::string output = ".";
     std::uint64_t seed = 1;
     std::string up;
+    bool geometry_only = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -49,16 +50,67 @@ void add_analyze_command(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the random independent sets that resolve conflicting docking sites")
       ->capture_default_str()->check(seed_number());
+  command->add_flag("--geometry-only", options->geometry_only,
+                    "When geometry alone gives no grid but matching materials (some grouped as one) would, keep to "
+                    "geometry and only name the options in a hint (default: go on with the materials matched)");
   add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y; stored in the grammar file for generate");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
-    const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
-    const SymmetryResult symmetries = detect_symmetries(prepared, symmetry_options(options->search), progress);
+    PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
+    SymmetryResult symmetries = detect_symmetries(prepared, symmetry_options(options->search), progress);
 
     Stopwatch stopwatch;
     std::vector<StageTiming> grammar_timings;
     ShapeGrammar grammar;
+    // The grammar's grids: the rules with their pieces cut from the prepared model.
+    auto add_grids = [&](std::vector<GridRule> rules) {
+      for (GridRule& rule : rules) {
+        std::vector<GridPiece> pieces = prepared.model.is_point_cloud()
+                                            ? cut_grid_points(prepared.model.cloud, rule)
+                                            : cut_grid_pieces(prepared.model.mesh, rule, prepared.surface.eps());
+        rule.seam_misfit = grid_seam_misfit(rule, pieces, prepared.surface.eps());
+        grammar.grids.push_back({std::move(rule), std::move(pieces)});
+      }
+    };
+    add_grids(find_grids(prepared, symmetries, {}, progress));
+    std::optional<ToleranceHint> hint = tolerance_hint(prepared, symmetries, grammar.grids);
+    grammar_timings.push_back({"grid rules", stopwatch.lap()});
+    // Geometry alone gave no grid: materials matched, with the ones that take one another's
+    // place grouped, may give one; analyze then goes on with them (with --geometry-only it only
+    // names them).
+    std::optional<MaterialHint> materials;
+    if (material_hint_applies(prepared, options->model.prepare, grammar.grids.size())) {  // timed only when it runs
+      const SymmetryOptions search = symmetry_options(options->search);
+      if (options->geometry_only) {
+        materials = material_hint(prepared, options->model.prepare, search, grammar.grids.size(), progress);
+        grammar_timings.push_back({"material hint", stopwatch.lap()});
+      } else if ((materials = material_grouping(prepared, options->model.prepare, search, grammar.grids.size(), progress))) {
+        const double hint_seconds = stopwatch.lap();
+        PreparedModel grouped = prepare_model(options->model.model_path, materials->options, progress);
+        SymmetryResult grouped_symmetries = detect_symmetries(grouped, search, progress);
+        const double grouped_search_seconds = stopwatch.lap();  // the grouped model's stages time themselves
+        std::vector<GridRule> rules = find_grids(grouped, grouped_symmetries, {}, progress);
+        if (rules.empty()) {
+          materials.reset();
+          grammar_timings.push_back({"material hint", hint_seconds + grouped_search_seconds + stopwatch.lap()});
+        } else {
+          // The stages so far become one line: the grouped model reports its own.
+          grammar_timings = {{"analysis by geometry alone (no grid)",
+                              total_seconds(prepared.timings) + total_seconds(symmetries.timings) + total_seconds(grammar_timings)},
+                             {"material hint", hint_seconds}};
+          prepared = std::move(grouped);
+          symmetries = std::move(grouped_symmetries);
+          materials->applied = true;
+          add_grids(std::move(rules));
+          for (const GridWithPieces& grid : grammar.grids) materials->grid_counts.push_back(exemplar_counts(grid.rule));
+          hint = tolerance_hint(prepared, symmetries, grammar.grids);
+          grammar_timings.push_back({"grid rules", stopwatch.lap()});
+        }
+      } else {
+        grammar_timings.push_back({"material hint", stopwatch.lap()});
+      }
+    }
     grammar.source_name = std::filesystem::path(options->model.model_path).filename().string();
     grammar.source_hash = file_hash(options->model.model_path);
     grammar.r = prepared.surface.r();
@@ -68,20 +120,6 @@ void add_analyze_command(CLI::App& app) {
     grammar.exemplar = prepared.model.mesh;
     if (prepared.model.is_point_cloud()) grammar.exemplar_points = prepared.model.cloud;
     grammar.materials = prepared.model.materials;
-    for (GridRule& rule : find_grids(prepared, symmetries, {}, progress)) {
-      std::vector<GridPiece> pieces = prepared.model.is_point_cloud() ? cut_grid_points(prepared.model.cloud, rule)
-                                                                      : cut_grid_pieces(prepared.model.mesh, rule, grammar.eps);
-      rule.seam_misfit = grid_seam_misfit(rule, pieces, grammar.eps);
-      grammar.grids.push_back({std::move(rule), std::move(pieces)});
-    }
-    const std::optional<ToleranceHint> hint = tolerance_hint(prepared, symmetries, grammar.grids);
-    grammar_timings.push_back({"grid rules", stopwatch.lap()});
-    std::optional<MaterialHint> materials;
-    if (material_hint_applies(prepared, options->model.prepare, grammar.grids.size())) {  // timed only when it runs
-      materials = material_hint(prepared, options->model.prepare, symmetry_options(options->search), grammar.grids.size(),
-                                progress);
-      grammar_timings.push_back({"material hint", stopwatch.lap()});
-    }
     DockingSiteOptions site_options;
     site_options.max_symmetries = options->site_symmetries;
     const DockingSiteResult docking = find_docking_sites(prepared, symmetries, site_options, progress);

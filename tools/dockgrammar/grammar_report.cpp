@@ -381,31 +381,34 @@ std::string materials_paragraph(const PreparedModel& prepared) {
                      materials.size(), names, groups);
 }
 
-// For a model with materials analysed by geometry alone: where to look when repeats exist only in
-// materials (empty otherwise). `quote` encloses option names (a backtick in Markdown).
-// The measured suggestion to match materials, when analyze made one; empty otherwise.
+// The measured suggestion to match materials, or, when analyze went on with it, what it did;
+// empty when analyze made none. `quote` encloses option names (a backtick in Markdown).
 std::string material_hint_text(const AnalysisReport& report, std::string_view quote = "") {
   if (!report.material_hint) return "";
   const MaterialHint& hint = *report.material_hint;
   std::string grids;
-  for (const std::vector<int>& counts : hint.grid_counts) {
-    std::string counts_list;
-    for (int c : counts) counts_list += (counts_list.empty() ? "" : " x ") + std::to_string(c);
-    grids += fmt::format("{}a {}-grid {}", grids.empty() ? "" : ", ", counts.size(), counts_list);
+  for (const std::vector<int>& counts : hint.grid_counts)
+    grids += fmt::format("{}a {}-grid {}", grids.empty() ? "" : ", ", counts.size(), fmt::join(counts, " x "));
+  std::string description = "the model's repeats are drawn in materials", flags;
+  if (hint.groups.empty()) {
+    flags = "--match-materials";
+  } else {
+    std::string names;
+    for (const std::vector<std::string>& group : hint.groups) {
+      flags += fmt::format("{}--same-material '{}'", flags.empty() ? "" : " ", fmt::join(group, ","));
+      names += fmt::format("{}{}", names.empty() ? "" : "; ", fmt::join(group, ","));
+    }
+    description += fmt::format(", some of which take one another's place at random ({})", names);
   }
-  if (hint.groups.empty())
-    return fmt::format("the model's repeats are drawn in materials: {0}--match-materials{0} gives {1}", quote, grids);
-  std::string flags, names;
-  for (const std::vector<std::string>& group : hint.groups) {
-    std::string list;
-    for (const std::string& name : group) list += (list.empty() ? "" : ",") + name;
-    flags += fmt::format("{}--same-material '{}'", flags.empty() ? "" : " ", list);
-    names += fmt::format("{}{}", names.empty() ? "" : "; ", list);
-  }
-  return fmt::format(
-      "the model's repeats are drawn in materials, some of which take one another's place at random ({}): {}{}{} gives {}",
-      names, quote, flags, quote, grids);
+  if (hint.applied)
+    return fmt::format("geometry alone gave no grid; {}, so analyze went on as with {}{}{}, which gives {} ({}--geometry-only{} "
+                       "keeps to geometry)",
+                       description, quote, flags, quote, grids, quote, quote);
+  return fmt::format("{}: {}{}{} gives {}", description, quote, flags, quote, grids);
 }
+
+// Whether analyze went on with the materials matched as the material hint found.
+bool materials_applied(const AnalysisReport& report) { return report.material_hint && report.material_hint->applied; }
 
 // Tolerances of cell matching that the symmetries were found with.
 CellTolerances match_tolerances(const AnalysisReport& report) {
@@ -476,7 +479,8 @@ std::string analysis_text(const AnalysisReport& report) {
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
   if (const std::string hint = tolerance_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
-  if (const std::string hint = material_hint_text(report); !hint.empty()) out += fmt::format("hint: {}\n", hint);
+  if (const std::string hint = material_hint_text(report); !hint.empty())
+    out += fmt::format("{}: {}\n", materials_applied(report) ? "materials" : "hint", hint);
   const ContextFreeGrammar& cf = report.grammar.context_free;
   const nlohmann::json ops = operation_counts(report.docking);
   out += fmt::format("docking sites: {} ({} insert, {} delete, {} replace)\n", report.docking.sites.size(),
@@ -544,7 +548,8 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"match_materials", report.prepared.materials_matched()},
           {"material_groups", material_groups(report.prepared)},
           {"material_hint", report.material_hint ? nlohmann::json{{"same_material", report.material_hint->groups},
-                                                                  {"grid_counts", report.material_hint->grid_counts}}
+                                                                  {"grid_counts", report.material_hint->grid_counts},
+                                                                  {"applied", report.material_hint->applied}}
                                                  : nlohmann::json(nullptr)},
           {"symmetries", report.symmetries.symmetries.size()},
           {"families", report.symmetries.families.size()},
@@ -599,7 +604,8 @@ void write_analysis_report(const AnalysisReport& report) {
   }
   md += strongest_translation_text(report);
   if (const std::string hint = tolerance_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
-  if (const std::string hint = material_hint_text(report, "`"); !hint.empty()) md += fmt::format("Hint: {}.\n\n", hint);
+  if (const std::string hint = material_hint_text(report, "`"); !hint.empty())
+    md += fmt::format("{}: {}.\n\n", materials_applied(report) ? "Materials" : "Hint", hint);
   for (std::size_t g = 0; g < report.grammar.grids.size(); ++g) {
     const GridWithPieces& grid = report.grammar.grids[g];
     md += fmt::format("### {} ({}-grid, counts {})\n\n", grid.rule.name, grid.rule.directions.size(), counts_text(grid.rule));

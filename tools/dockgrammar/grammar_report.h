@@ -29,14 +29,15 @@ struct AnalysisReport {
   std::filesystem::path report_path;
   std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
   std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
-  std::optional<MaterialHint> material_hint;    ///< material matching that would give grids (grammar/material_hint.h)
+  std::optional<MaterialHint> material_hint;    ///< material matching that gives grids (grammar/material_hint.h), applied or not
 };
 
 /// Short readable summary for stdout.
 std::string analysis_text(const AnalysisReport& report);
 
 /// {r, eps, materials (names), match_materials, material_groups, material_hint (null, or
-/// {same_material: [[names]] (empty: --match-materials alone), grid_counts}), symmetries, families,
+/// {same_material: [[names]] (empty: --match-materials alone), grid_counts, applied: analyze went
+/// on with them}), symmetries, families,
 /// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,
 /// transforms, count_range, pieces}], grammar_file, timings_s, missing (what this model shows that
 /// analyze could not turn into rules, one sentence each, see not_built_items)}.
