@@ -74,6 +74,15 @@ std::optional<std::vector<int>> shared_classes(const GridRule& grid, const std::
   return shared;
 }
 
+// How the positions changed so far meet `grid`, resized next: nothing when they do not all lie
+// in one head or tail piece of it, else whether that piece is a tail along some direction (its
+// resize moves them along, so grids after it need not judge them again).
+std::optional<bool> moved_with_tail(const GridRule& grid, const std::vector<Vec3>& changed) {
+  const std::optional<std::vector<int>> classes = shared_classes(grid, changed);
+  if (!classes || std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0 && c != 2; })) return std::nullopt;
+  return std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; });
+}
+
 // Most resizes whose orders are tried; beyond, grammar order is kept.
 constexpr std::size_t kOrdersTried = 5;
 
@@ -86,9 +95,9 @@ bool stays_in_stored_pieces(const ShapeGrammar& grammar, const std::vector<GridR
   for (std::size_t step = 0; step < order.size(); ++step) {
     const GridRule grid = changing_directions(grammar.grids[order[step].grid].rule, order[step].counts).first;
     if (step > 0 && !changed.empty()) {
-      const std::optional<std::vector<int>> classes = shared_classes(grid, changed);
-      if (!classes || std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0 && c != 2; })) return false;
-      if (std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; })) changed.clear();
+      const std::optional<bool> with_tail = moved_with_tail(grid, changed);
+      if (!with_tail) return false;
+      if (*with_tail) changed.clear();
     }
     changed.insert(changed.end(), changes[step].begin(), changes[step].end());
   }
@@ -162,14 +171,13 @@ Geometry resize_in_order(const ShapeGrammar& grammar, const std::vector<GridResi
     const auto [rule, counts] = step == 0 ? std::pair{grid.rule, order[step].counts} : changing_directions(grid.rule, order[step].counts);
     std::vector<GridPiece> recut_pieces;
     if (step > 0 && !changed.empty()) {
-      const std::optional<std::vector<int>> classes = shared_classes(rule, changed);
-      const bool stored = classes && std::all_of(classes->begin(), classes->end(), [](int c) { return c == 0 || c == 2; });
-      if (!stored)
+      const std::optional<bool> with_tail = moved_with_tail(rule, changed);
+      if (!with_tail)
         throw InputError(fmt::format("grids {} and {} overlap: resizing {} changes the model inside more than one piece, "
                                      "or inside the repeated units, of {}; resize one, analyze the result, then resize "
                                      "the other",
                                      changed_by, grid.rule.name, changed_by, grid.rule.name));
-      if (std::any_of(classes->begin(), classes->end(), [](int c) { return c != 0; })) changed.clear();  // moved with a tail
+      if (*with_tail) changed.clear();
     }
     if (step > 0) recut_pieces = recut(result, rule);
     const std::vector<GridPiece>& pieces = step == 0 ? grid.pieces : recut_pieces;
