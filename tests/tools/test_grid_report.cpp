@@ -69,11 +69,22 @@ TEST_CASE("analyze: with no grid, the report's grid section names the translatio
 
 TEST_CASE("analyze: a further run of a grid's motion says so, with where both runs' planes lie", "[tools][grids]") {
   // fence(3), a gate, then 4 more inner posts (pitch 2): the second stretch starts at x = 11.
-  const std::string report = analyze_report(dg::assets::make_asset("fence", {{"n", 3}, {"after_gate", 4}}).mesh, "gated");
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report-gated");
+  dg::write_mesh(folder / "gated.obj", dg::assets::make_asset("fence", {{"n", 3}, {"after_gate", 4}}).mesh);
+  const dg::test::CliRun run =
+      dg::test::run_cli("analyze " + (folder / "gated.obj").string() + " -q --json -o " + folder.string(), folder);
+  REQUIRE(run.status == 0);
+  std::ifstream in(folder / "gated.report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   INFO(report);
   const std::size_t grid2 = report.find("### grid2 (1-grid");
   REQUIRE(grid2 != std::string::npos);
   CHECK(report.find("A further run along the motion of grid1's direction 1: its planes lie from", grid2) ==
         report.find('\n', grid2) + 2);
   CHECK(report.find("A further run") == report.rfind("A further run"));  // grid1 is the first run
+  // --json names it too.
+  const nlohmann::json grids = nlohmann::json::parse(run.output)["grids"];
+  REQUIRE(grids.size() == 2);
+  CHECK(grids[0]["further_run_of"].is_null());
+  CHECK(grids[1]["further_run_of"] == nlohmann::json({{"grid", "grid1"}, {"direction", 1}}));
 }

@@ -182,24 +182,31 @@ double first_cut(const GridDirection& d, const Vec3& origin) { return d.cut + d.
 
 std::string counts_text(const GridRule& grid) { return fmt::format("{}", fmt::join(exemplar_counts(grid), "x")); }
 
-// For a grid whose motion is that of a direction of an earlier grid (a further run along it,
-// grammar/grid_rules.h): which one, and where along the motion both runs' planes lie ("along the
-// motion of ..."). Else empty.
-std::string further_run_text(const AnalysisReport& report, std::size_t grid_index) {
+// For a 1-grid whose motion is that of a direction of an earlier grid (a further run along it,
+// grammar/grid_rules.h): that grid's index and the direction's.
+std::optional<std::pair<std::size_t, std::size_t>> further_run_of(const AnalysisReport& report, std::size_t grid_index) {
   const std::vector<GridWithPieces>& grids = report.grammar.grids;
-  if (grids[grid_index].rule.directions.size() != 1) return "";
+  if (grids[grid_index].rule.directions.size() != 1) return std::nullopt;
   const GridDirection& run = grids[grid_index].rule.directions.front();
-  const Vec3& origin = report.prepared.origin;
   for (std::size_t g = 0; g < grid_index; ++g)
-    for (std::size_t i = 0; i < grids[g].rule.directions.size(); ++i) {
-      const GridDirection& d = grids[g].rule.directions[i];
-      if (d.symmetry != run.symmetry) continue;
-      return fmt::format("along the motion of {}'s direction {}: its planes lie from {:.6g} to {:.6g} along "
-                         "it, {}'s from {:.6g} to {:.6g}, and what lies between is mostly not a copy of the units",
-                         grids[g].rule.name, i + 1, first_cut(run, origin), first_cut(run, origin) + run.count * run.pitch,
-                         grids[g].rule.name, first_cut(d, origin), first_cut(d, origin) + d.count * d.pitch);
-    }
-  return "";
+    for (std::size_t i = 0; i < grids[g].rule.directions.size(); ++i)
+      if (grids[g].rule.directions[i].symmetry == run.symmetry) return std::pair{g, i};
+  return std::nullopt;
+}
+
+// For a further run (further_run_of): which grid's, and where along the motion both runs' planes
+// lie ("along the motion of ..."). Else empty.
+std::string further_run_text(const AnalysisReport& report, std::size_t grid_index) {
+  const std::optional<std::pair<std::size_t, std::size_t>> of = further_run_of(report, grid_index);
+  if (!of) return "";
+  const GridRule& first = report.grammar.grids[of->first].rule;
+  const GridDirection& d = first.directions[of->second];
+  const GridDirection& run = report.grammar.grids[grid_index].rule.directions.front();
+  const Vec3& origin = report.prepared.origin;
+  return fmt::format("along the motion of {}'s direction {}: its planes lie from {:.6g} to {:.6g} along it, {}'s from "
+                     "{:.6g} to {:.6g}, and what lies between is mostly not a copy of the units",
+                     first.name, of->second + 1, first_cut(run, origin), first_cut(run, origin) + run.count * run.pitch,
+                     first.name, first_cut(d, origin), first_cut(d, origin) + d.count * d.pitch);
 }
 
 // Components with 6 significant digits; rounding noise (below 1e-9 of the length) and -0 show as 0.
@@ -532,7 +539,10 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
                      {"min_counts", lowest},
                      {"seam_misfit", grid.rule.seam_misfit},
                      {"parts_kept_whole", kept_whole},
+                     {"further_run_of", nlohmann::json(nullptr)},
                      {"pieces", pieces}});
+    if (const auto of = further_run_of(report, grids.size() - 1))
+      grids.back()["further_run_of"] = {{"grid", report.grammar.grids[of->first].rule.name}, {"direction", of->second + 1}};
   }
   const bool cloud = report.prepared.model.is_point_cloud();
   return {{"model", report.prepared.model.source_path},
