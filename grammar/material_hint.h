@@ -48,6 +48,13 @@ std::vector<std::vector<std::uint32_t>> interchangeable_materials(const std::vec
 /// geometry alone (`options` match no materials), that gave no grid (`grids_found` == 0).
 bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& options, std::size_t grids_found);
 
+/// The first, lighter part of material_hint: the groups and options (grid_counts empty) when
+/// the lighter search with them gives a grid, else nothing. For a caller that goes on with the
+/// full search itself (analyze, which then analyses the model with those options).
+std::optional<MaterialHint> material_grouping(const PreparedModel& prepared, const PrepareOptions& options,
+                                              const SymmetryOptions& symmetry_options, std::size_t grids_found,
+                                              const ProgressCallback& progress = {});
+
 /// A hint for a mesh with materials analysed by geometry alone (`options` match no materials)
 /// that gave no grid: symmetries are detected with materials matched (a lighter search: 4000
 /// keypoints, 150 vote sources, 200k pairs, 16 candidates verified), the materials its translations swap are grouped
@@ -57,13 +64,6 @@ bool material_hint_applies(const PreparedModel& prepared, const PrepareOptions& 
 /// counts of the full search's grids, when there are any. Nothing
 /// otherwise (and nothing for point clouds, models with fewer than two materials, or group
 /// names that `--same-material` could not take: with a comma, an asterisk or a quote).
-/// The first, lighter part of material_hint: the groups and options (grid_counts empty) when
-/// the lighter search with them gives a grid, else nothing. For a caller that goes on with the
-/// full search itself (analyze, which then analyses the model with those options).
-std::optional<MaterialHint> material_grouping(const PreparedModel& prepared, const PrepareOptions& options,
-                                              const SymmetryOptions& symmetry_options, std::size_t grids_found,
-                                              const ProgressCallback& progress = {});
-
 std::optional<MaterialHint> material_hint(const PreparedModel& prepared, const PrepareOptions& options,
                                           const SymmetryOptions& symmetry_options, std::size_t grids_found,
                                           const ProgressCallback& progress = {});
