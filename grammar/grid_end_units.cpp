@@ -6,42 +6,105 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace dg {
+namespace {
+
+// The triangles of `mesh` that do not lie in the plane d . x = offset (all three corners within
+// `tolerance` of it).
+TriangleMesh without_faces_on(const TriangleMesh& mesh, const Vec3& d, double offset, double tolerance) {
+  std::vector<std::size_t> kept;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    if (std::max({std::abs(d.dot(a) - offset), std::abs(d.dot(b) - offset), std::abs(d.dot(c) - offset)}) > tolerance)
+      kept.push_back(t);
+  }
+  return submesh(mesh, kept);
+}
+
+// Whether `a` and `b` are the same surface within `tolerance`, their areas within kSameSlabArea.
+bool same_part(const TriangleMesh& a, const TriangleMesh& b, double tolerance) {
+  const double area_a = a.area(), area_b = b.area();
+  if (area_a <= 0.0 || std::abs(area_a - area_b) > kSameSlabArea * std::max(area_a, area_b)) return false;
+  return same_surface(a, b, tolerance);
+}
+
+}  // namespace
 
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
                     std::span<const std::uint32_t> material_classes) {
   const Vec3& d = direction.direction;
   const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
-  // Slab k lies between start + k p and start + (k + 1) p; each walk outward compares a slab with
-  // the one it compared before, so cut meshes are kept per slab.
-  const SlabTable slabs(mesh, d, start, p);
-  std::map<int, TriangleMesh> meshes;
-  auto area = [&](int k) { return slabs.area(k); };
-  auto slab = [&](int k) -> const TriangleMesh& {
-    auto [it, added] = meshes.try_emplace(k);
-    if (!added) return it->second;
-    TriangleMesh& cut = it->second = slabs.mesh(k, snap);
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (const Vec3& x : mesh.positions) {
+    lowest = std::min(lowest, d.dot(x));
+    highest = std::max(highest, d.dot(x));
+  }
+  auto by_class = [&](TriangleMesh cut) {
     if (material_classes.empty()) cut.materials.clear();
     for (std::uint32_t& m : cut.materials) m = material_classes[m];
+    return cut;
+  };
+  // Faces in the model's first and last plane across the direction (the end caps of a plate
+  // that the units stand on) are no part of a unit: slabs that reach them are compared without.
+  auto without_caps = [&](const TriangleMesh& part) {
+    return without_faces_on(without_faces_on(part, d, lowest, tolerance), d, highest, tolerance);
+  };
+  // Slab k lies between start + k p and start + (k + 1) p; each walk outward compares a slab with
+  // the one it compared before, so cut meshes are kept per slab (and, for the slabs that reach
+  // the model's ends, without the end caps).
+  const SlabTable slabs(mesh, d, start, p);
+  auto reaches_end = [&](int k) { return start + k * p <= lowest + tolerance || start + (k + 1) * p >= highest - tolerance; };
+  std::map<int, TriangleMesh> meshes, bare_meshes;
+  auto slab = [&](int k) -> const TriangleMesh& {
+    auto [it, added] = meshes.try_emplace(k);
+    if (added) it->second = by_class(slabs.mesh(k, snap));
     return it->second;
   };
-  // Whether slab k, moved by the motion, is slab k + 1.
+  auto bare = [&](int k) -> const TriangleMesh& {
+    auto [it, added] = bare_meshes.try_emplace(k);
+    if (added) it->second = reaches_end(k) ? without_caps(slab(k)) : slab(k);
+    return it->second;
+  };
+  // Whether slab k, moved by the motion, is slab k + 1, as it is or, where one reaches an end of
+  // the model, without the end caps (the slab table's areas reject most slabs before they are cut).
   auto copies_next = [&](int k) {
-    const double a = area(k), b = area(k + 1);
-    if (a <= 0.0 || std::abs(a - b) > kSameSlabArea * std::max(a, b)) return false;
-    return same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance);
+    const double a = slabs.area(k), b = slabs.area(k + 1);
+    if (a > 0.0 && std::abs(a - b) <= kSameSlabArea * std::max(a, b) &&
+        same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance))
+      return true;
+    return (reaches_end(k) || reaches_end(k + 1)) && same_part(transformed(bare(k), direction.motion), bare(k + 1), tolerance);
   };
   int head = 0, tail = 0;
   while (copies_next(-head - 1)) ++head;
   while (copies_next(direction.count + tail - 1)) ++tail;
-  direction.cut -= head * p;
-  direction.count += head + tail;
-  direction.head_units += head;
+  // A unit split between the ends (a row of lockers cut between their handles): the part before
+  // the first plane is the end of a unit and the part after the last plane its beginning, the two
+  // one pitch long together. It counts as a unit kept in the head.
+  const double first = start - head * p, last = start + (direction.count + tail) * p;
+  const double before = first - lowest, after = highest - last;
+  bool split = false;
+  if (before > tolerance && after > tolerance && std::abs(before + after - p) <= tolerance) {
+    // The unit's part that a part beyond the planes copies, from `from` over `length`, without
+    // the faces in its plane at `boundary` (where the row's objects meet back to back).
+    auto unit_part = [&](double from, double length, double boundary) {
+      return without_faces_on(by_class(SlabTable(mesh, d, from, length).mesh(0, snap)), d, boundary, tolerance);
+    };
+    const TriangleMesh head_moved = without_faces_on(transformed(bare(-head - 1), direction.motion), d, lowest + p, tolerance);
+    const TriangleMesh tail_moved =
+        without_faces_on(transformed(bare(direction.count + tail), direction.motion.inverse()), d, highest - p, tolerance);
+    split = same_part(head_moved, unit_part(lowest + p, before, lowest + p), tolerance) &&
+            same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance);
+  }
+  const int kept_in_head = head + (split ? 1 : 0);
+  direction.cut -= kept_in_head * p;
+  direction.count += kept_in_head + tail;
+  direction.head_units += kept_in_head;
   direction.tail_units += tail;
-  return head + tail;
+  return kept_in_head + tail;
 }
 
 }  // namespace dg

@@ -18,7 +18,14 @@ inline constexpr double kSameSlabArea = 1e-4;
 /// moved by the direction's motion, is the same surface as the slab after it within `tolerance`
 /// (model units; geometry/same_surface.h) and has the same area (kSameSlabArea, so a hidden
 /// second layer of faces counts), the first plane moves back one pitch and the slab joins the count as a
-/// unit kept in the head; likewise after the last plane for the tail. Resizing to the new count
+/// unit kept in the head; likewise after the last plane for the tail. A slab that reaches the
+/// model's first or last plane across the direction is also compared without the faces in that
+/// plane (end caps, such as a plate's end under a row of keys). Then, when the part of the model
+/// before the first plane, moved by the motion, is the unit's part just after its own first plane
+/// and the part after the last plane, moved back, the unit's part before its last plane, the two
+/// one pitch long together (faces in the planes where they meet left out: a row of touching
+/// lockers cut between their handles), they count as one more unit kept in the head (a split
+/// unit: at the smallest count the head and tail pieces join into it). Resizing to the new count
 /// still gives the exemplar (head and tail pieces are unchanged), and each further unit adds one
 /// copy of the repeated unit. Materials are compared by `material_classes` (the class of each
 /// material index, as the symmetries matched them: random tints grouped as one); empty (materials

@@ -712,13 +712,13 @@ TEST_CASE("corpus: the Sweet Home 3D railing turned about a general axis keeps i
   INFO(a.sites.sites.size() << " sites turned, " << upright.sites.sites.size() << " upright");
   CHECK(2 * a.sites.sites.size() >= upright.sites.sites.size());
   CHECK(operations(a, dg::OperationKind::insert) > 0);
-  // The baluster grid, 7 units as upright, along the turned pitch.
+  // The baluster grid, 8 units as upright, along the turned pitch.
   const std::vector<dg::GridRule> grids = dg::find_grids(a.prepared, a.symmetries);
   REQUIRE(grids.size() == 1);
   REQUIRE(grids[0].directions.size() == 1);
   const dg::Vec3 pitch = dg::test::general_rotation() * dg::Vec3(0.118, 0, 0);
   CHECK(std::abs(std::abs(grids[0].directions[0].translation.normalized().dot(pitch.normalized())) - 1.0) < 1e-4);
-  CHECK(grids[0].directions[0].count == 7);
+  CHECK(grids[0].directions[0].count == 8);
 }
 
 TEST_CASE("docking sites of the fence: insert at the far end, delete at the near end", "[grammar][docking]") {

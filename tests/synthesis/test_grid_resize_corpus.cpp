@@ -46,7 +46,7 @@ std::vector<double> baluster_positions(const dg::TriangleMesh& mesh) {
 
 }  // namespace
 
-TEST_CASE("corpus: the railing resized by -1 and +1 unit and to none loses or gains balusters, one pitch each", "[synthesis][grid][corpus]") {
+TEST_CASE("corpus: the railing resized by -1 and +1 unit and to one loses or gains balusters, one pitch each", "[synthesis][grid][corpus]") {
   const std::optional<std::filesystem::path> railing = dg::test::corpus_file_if_present("meshes/arch-sh3d-railing/railing.obj");
   if (!railing) return;
   const dg::PreparedModel prepared = dg::prepare_model(*railing);
@@ -74,7 +74,8 @@ TEST_CASE("corpus: the railing resized by -1 and +1 unit and to none loses or ga
   CHECK(dg::test::hausdorff_distance(same, exemplar) < eps);
   CHECK(same.area() == Approx(exemplar.area()).epsilon(1e-3));
 
-  for (int change : {-1, 1, -own}) {  // -own: no unit, the head's seam welded to the tail's
+  REQUIRE(own == 8);  // one unit per baluster, one of them split between the ends
+  for (int change : {-1, 1, 1 - own}) {  // 1 - own: the split unit alone, the head's seam welded to the tail's
     CAPTURE(change);
     const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {own + change}, eps);
     // One baluster more or less, at the same spacing, starting where the exemplar's start.
