@@ -194,6 +194,7 @@ void write_grammar(const std::filesystem::path& path, const ShapeGrammar& gramma
                             {"count", d.count},
                             {"head_units", d.head_units},
                             {"tail_units", d.tail_units}});
+      if (d.split_unit) directions.back()["split_unit"] = true;
       transforms.push_back(matrix_json(d.motion.matrix()));
       counts.push_back(d.count);
     }
@@ -437,10 +438,12 @@ ShapeGrammar read_grammar(const std::filesystem::path& path) {
       // Optional (files written before they existed: no unit kept in the head or tail).
       if (d.contains("head_units")) direction.head_units = field<int>(d, "head_units", where);
       if (d.contains("tail_units")) direction.tail_units = field<int>(d, "tail_units", where);
+      if (d.contains("split_unit")) direction.split_unit = field<bool>(d, "split_unit", where);
       if (direction.count < 1 || direction.head_units < 0 || direction.tail_units < 0 ||
-          direction.head_units + direction.tail_units >= direction.count)
+          direction.head_units + direction.tail_units >= direction.count || (direction.split_unit && direction.head_units < 1))
         throw InputError(where + ": grid " + entry.rule.name +
-                         ": a direction needs count >= 1 and head_units + tail_units < count (both >= 0)");
+                         ": a direction needs count >= 1 and head_units + tail_units < count (both >= 0), and a "
+                         "head unit when its unit is split");
       entry.rule.directions.push_back(direction);
     }
     // The generators: a translation by `translation`, or a screw whose slide is `translation`.

@@ -100,6 +100,7 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
             same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance);
   }
   const int kept_in_head = head + (split ? 1 : 0);
+  direction.split_unit = direction.split_unit || split;
   direction.cut -= kept_in_head * p;
   direction.count += kept_in_head + tail;
   direction.head_units += kept_in_head;

@@ -40,6 +40,9 @@ struct GridDirection {
   /// head_units + 1; a resize places it count - head_units - tail_units times.
   int head_units = 0;
   int tail_units = 0;
+  /// One of the head units is split between the ends: the part before the first plane is its end
+  /// and the part after the last plane its beginning (grammar/grid_end_units.h).
+  bool split_unit = false;
   std::size_t symmetry = 0;         ///< index of the generator in SymmetryResult::symmetries
   /// Separate parts kept whole instead of cut (grammar/whole_parts.h), as triangles of the
   /// cleaned model: placed once with the head, or moved with the tail. Empty when the planes

@@ -3,7 +3,10 @@
 
 #include "assets/generator/asset.h"
 #include "geometry/topology.h"
+#include "grammar/grammar_file.h"
 #include "synthesis/grid_resize.h"
+#include "support/asset_grammar.h"
+#include "support/cli_run.h"
 #include "support/corpus.h"
 #include "support/mesh_distance.h"
 #include "support/shapes.h"
@@ -140,6 +143,8 @@ TEST_CASE("a row of touching lockers: one unit per locker, one of them split bet
   const dg::GridDirection* row = direction_along(grids[0], Vec3(0.6, 0, 0));
   REQUIRE(row != nullptr);
   CHECK(row->count == 5);
+  CHECK(row->head_units == 1);
+  CHECK(row->split_unit);
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
   for (int n : {1, 3, 5, 8}) {
     INFO(n << " lockers");
@@ -147,6 +152,16 @@ TEST_CASE("a row of touching lockers: one unit per locker, one of them split bet
     CHECK(narrow_components(resized) == static_cast<std::size_t>(n));  // one handle per locker
     CHECK(resized.bounds().size().x() == Approx(0.6 * n).margin(1e-9));
   }
+  // The grammar file keeps the split.
+  dg::Model again;
+  again.mesh = lockers(5);
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(std::move(again), false);
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-lockers-grammar");
+  dg::write_grammar(folder / "lockers.grammar.json", grammar);
+  const dg::ShapeGrammar read = dg::read_grammar(folder / "lockers.grammar.json");
+  REQUIRE(read.grids.size() == 1);
+  CHECK(read.grids[0].rule.directions[0].split_unit);
+  CHECK(read.grids[0].rule.directions[0].count == 5);
 }
 
 TEST_CASE("a row of keys on a plate that ends half a pitch beyond the last ones counts every key", "[grammar][grid]") {

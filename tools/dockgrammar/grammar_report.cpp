@@ -140,13 +140,18 @@ std::string dropped_rules_text(const ContextFreeStats& stats) {
 // the head: it differs a little from the repeated unit or lies where no plane may cut)"; empty
 // when it keeps none.
 std::string kept_units_text(const GridDirection& d) {
-  if (min_units(d) == 0) return "";
+  const std::string split = d.split_unit ? "1 unit split between the ends: its end lies before the first plane, its "
+                                           "beginning after the last"
+                                         : "";
+  const int head = d.head_units - (d.split_unit ? 1 : 0);
+  if (head + d.tail_units == 0) return split.empty() ? "" : fmt::format(" ({})", split);
   auto units = [](int n) { return fmt::format("{} unit{}", n, n == 1 ? "" : "s"); };
   std::string kept;
-  if (d.head_units > 0) kept = units(d.head_units) + " kept once in the head";
+  if (head > 0) kept = units(head) + " kept once in the head";
   if (d.tail_units > 0) kept += kept.empty() ? units(d.tail_units) + " kept once in the tail" : fmt::format(" and {} in the tail", d.tail_units);
-  return fmt::format(" ({}: {} a little from the repeated unit or {} within r of the model's ends, where no plane may cut)",
-                     kept, min_units(d) == 1 ? "it differs" : "they differ", min_units(d) == 1 ? "lies" : "lie");
+  const bool one = head + d.tail_units == 1;
+  return fmt::format(" ({}{}: {} a little from the repeated unit or {} within r of the model's ends, where no plane may cut)",
+                     split.empty() ? "" : split + "; ", kept, one ? "it differs" : "they differ", one ? "lies" : "lie");
 }
 
 // Separate parts (vertex-connected components of `mesh`) among the listed triangles.
