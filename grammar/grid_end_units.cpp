@@ -8,26 +8,40 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 
 namespace dg {
 namespace {
 
-// The triangles of `mesh` that do not lie in the plane d . x = offset (all three corners within
-// `tolerance` of it).
+// Largest angle between a face's normal and the direction for the face to count as lying across
+// it (detected motions of a turned model carry that much noise in their direction).
+constexpr double kAcrossDegrees = 2.0;
+
+// The triangles of `mesh` that do not lie in the plane d . x = offset: a face lies in it when its
+// corners lie within `tolerance` of the plane, or when its normal is within kAcrossDegrees of +-d
+// and its centroid within `tolerance` of the plane, plus what that tilt moves its far corner.
 TriangleMesh without_faces_on(const TriangleMesh& mesh, const Vec3& d, double offset, double tolerance) {
+  const double min_cos = std::cos(kAcrossDegrees * std::numbers::pi / 180.0);
+  const double tilt = std::sin(kAcrossDegrees * std::numbers::pi / 180.0);
   std::vector<std::size_t> kept;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
-    if (std::max({std::abs(d.dot(a) - offset), std::abs(d.dot(b) - offset), std::abs(d.dot(c) - offset)}) > tolerance)
-      kept.push_back(t);
+    const Vec3 area_vector = mesh.area_vector(t);
+    const Vec3 centroid = (a + b + c) / 3.0;
+    const double reach = std::max({(a - centroid).norm(), (b - centroid).norm(), (c - centroid).norm()});
+    const bool across = area_vector.norm() > 0.0 && std::abs(area_vector.normalized().dot(d)) >= min_cos;
+    const bool corners_in = std::max({std::abs(d.dot(a) - offset), std::abs(d.dot(b) - offset), std::abs(d.dot(c) - offset)}) <= tolerance;
+    const bool tilted_in = across && std::abs(d.dot(centroid) - offset) <= tolerance + tilt * reach;
+    if (!corners_in && !tilted_in) kept.push_back(t);
   }
   return submesh(mesh, kept);
 }
 
-// Whether `a` and `b` are the same surface within `tolerance`, their areas within kSameSlabArea.
-bool same_part(const TriangleMesh& a, const TriangleMesh& b, double tolerance) {
+// Whether `a` and `b` are the same surface within `tolerance`, their areas within `same_area`
+// of each other (relative).
+bool same_part(const TriangleMesh& a, const TriangleMesh& b, double tolerance, double same_area = kSameSlabArea) {
   const double area_a = a.area(), area_b = b.area();
-  if (area_a <= 0.0 || std::abs(area_a - area_b) > kSameSlabArea * std::max(area_a, area_b)) return false;
+  if (area_a <= 0.0 || std::abs(area_a - area_b) > same_area * std::max(area_a, area_b)) return false;
   return same_surface(a, b, tolerance);
 }
 
@@ -96,8 +110,11 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     const TriangleMesh head_moved = without_faces_on(transformed(bare(-head - 1), direction.motion), d, lowest + p, tolerance);
     const TriangleMesh tail_moved =
         without_faces_on(transformed(bare(direction.count + tail), direction.motion.inverse()), d, highest - p, tolerance);
-    split = same_part(head_moved, unit_part(lowest + p, before, lowest + p), tolerance) &&
-            same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance);
+    // The parts end at the model's end faces, the unit's at planes across the detected motion: on
+    // a turned model the two lean apart by the motion's noise, leaving slivers of the sides.
+    constexpr double kSplitArea = 1e-2;
+    split = same_part(head_moved, unit_part(lowest + p, before, lowest + p), tolerance, kSplitArea) &&
+            same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance, kSplitArea);
   }
   const int kept_in_head = head + (split ? 1 : 0);
   direction.split_unit = direction.split_unit || split;

@@ -2,6 +2,7 @@
 #include "grammar/grid_cut.h"
 
 #include "assets/generator/asset.h"
+#include "geometry/submesh.h"
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
 #include "synthesis/grid_resize.h"
@@ -165,20 +166,37 @@ TEST_CASE("a row of touching lockers: one unit per locker, one of them split bet
 }
 
 TEST_CASE("a row of keys on a plate that ends half a pitch beyond the last ones counts every key", "[grammar][grid]") {
-  // 12 keys at a pitch of 0.025 on a plate 0.3 long: the plate's end faces lie where the first and
+  // 12 x 4 keys at a pitch of 0.025 on a plate 0.3 long: the plate's end faces lie where the first and
   // last units end; compared without them, the end slabs are copies of the unit.
   dg::Model model;
-  model.mesh = dg::test::make_box(Vec3(-0.15, -0.02, 0.0), Vec3(0.15, 0.02, 0.02));
-  for (int i = 0; i < 12; ++i) {
-    const double x = -0.1375 + 0.025 * i;
-    dg::test::append(model.mesh, dg::test::make_box(Vec3(x - 0.0095, -0.0095, 0.02), Vec3(x + 0.0095, 0.0095, 0.034)));
-  }
+  model.mesh = dg::test::make_box(Vec3(-0.15, -0.055, 0.0), Vec3(0.15, 0.055, 0.02));
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double x = -0.1375 + 0.025 * i, y = -0.0375 + 0.025 * j;
+      dg::test::append(model.mesh, dg::test::make_box(Vec3(x - 0.0095, y - 0.0095, 0.02), Vec3(x + 0.0095, y + 0.0095, 0.034)));
+    }
+  // The same keyboard turned by 0.7 rad about z, then 0.4 about x, and moved.
+  const dg::Mat3 turn = (Eigen::AngleAxisd(0.4, Vec3::UnitX()) * Eigen::AngleAxisd(0.7, Vec3::UnitZ())).toRotationMatrix();
+  dg::Model turned;
+  turned.mesh = dg::transformed(model.mesh, dg::RigidTransform{turn, Vec3(3.0, -2.0, 1.0)});
+  for (Vec3& p : turned.mesh.positions) p = (p * 1e6).array().round() / 1e6;  // as an OBJ with 6 decimals stores it
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
   const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
   REQUIRE(!grids.empty());
   const dg::GridDirection* keys = direction_along(grids[0], Vec3(0.025, 0, 0));
   REQUIRE(keys != nullptr);
   CHECK(keys->count == 12);
+  // Turned and stored with 6 decimals (as a user's OBJ may lie), the detected motion's direction
+  // carries noise: the plate's end faces lean against the planes across it and still count as
+  // its end caps, and the split unit's parts, which end at them, still match the unit's.
+  const dg::PreparedModel turned_prepared = dg::prepare_model(std::move(turned));
+  const std::vector<dg::GridRule> turned_grids = dg::find_grids(turned_prepared, dg::detect_symmetries(turned_prepared));
+  REQUIRE(!turned_grids.empty());
+  const dg::GridDirection* along = nullptr;  // the detected translation is the turned pitch up to its noise
+  for (const dg::GridDirection& d : turned_grids[0].directions)
+    if (std::abs(std::abs(d.direction.dot(turn * Vec3::UnitX())) - 1.0) < 1e-4) along = &d;
+  REQUIRE(along != nullptr);
+  CHECK(along->count == 12);
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
