@@ -179,10 +179,11 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
     slab_cells.add(s, in_xi[c] != 0);
   }
   // Runs found before along this motion keep their planes and half a pitch around them.
-  for (const auto& [lo, hi] : taken) {
-    forward.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
-    first_plane.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
-  }
+  auto block_taken = [&](Blocked& blocked) {
+    for (const auto& [lo, hi] : taken) blocked.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
+  };
+  block_taken(forward);
+  block_taken(first_plane);
   forward.finish();
   slab_cells.finish();
 
@@ -381,7 +382,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
       if (lo <= hi) first_plane.add(lo, hi);
     }
   }
-  for (const auto& [lo, hi] : taken) backward.add(lo - 0.5 * pitch, hi + 0.5 * pitch);
+  block_taken(backward);
   backward.finish();
   first_plane.finish();
 

@@ -40,13 +40,18 @@ Analysis analyze_asset(const std::string& name, const nlohmann::json& params) {
   return a;
 }
 
+// The grids of a prepared model, from its detected symmetries.
+std::vector<dg::GridRule> grids_of(const dg::PreparedModel& prepared) {
+  return dg::find_grids(prepared, dg::detect_symmetries(prepared));
+}
+
 // The grids of the generator's model turned by general_rotation() about the origin.
 std::vector<dg::GridRule> turned_grids(const std::string& name, const nlohmann::json& params) {
   dg::Model turned;
   turned.mesh = dg::assets::make_asset(name, params).mesh;
   dg::test::turn_generally(turned.mesh);
   const dg::PreparedModel prepared = dg::prepare_model(std::move(turned));
-  return dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  return grids_of(prepared);
 }
 
 // The direction of `grid` whose translation is +-t, or null.
@@ -139,7 +144,7 @@ TEST_CASE("a row of touching lockers: one unit per locker, one of them split bet
   dg::Model model;
   model.mesh = lockers(5);
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
   REQUIRE(grids.size() == 1);
   const dg::GridDirection* row = direction_along(grids[0], Vec3(0.6, 0, 0));
   REQUIRE(row != nullptr);
@@ -181,7 +186,7 @@ TEST_CASE("a row of keys on a plate that ends half a pitch beyond the last ones 
   turned.mesh = dg::transformed(model.mesh, dg::RigidTransform{turn, Vec3(3.0, -2.0, 1.0)});
   for (Vec3& p : turned.mesh.positions) p = (p * 1e6).array().round() / 1e6;  // as an OBJ with 6 decimals stores it
   const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
   REQUIRE(!grids.empty());
   const dg::GridDirection* keys = direction_along(grids[0], Vec3(0.025, 0, 0));
   REQUIRE(keys != nullptr);
@@ -190,7 +195,7 @@ TEST_CASE("a row of keys on a plate that ends half a pitch beyond the last ones 
   // carries noise: the plate's end faces lean against the planes across it and still count as
   // its end caps, and the split unit's parts, which end at them, still match the unit's.
   const dg::PreparedModel turned_prepared = dg::prepare_model(std::move(turned));
-  const std::vector<dg::GridRule> turned_grids = dg::find_grids(turned_prepared, dg::detect_symmetries(turned_prepared));
+  const std::vector<dg::GridRule> turned_grids = grids_of(turned_prepared);
   REQUIRE(!turned_grids.empty());
   const dg::GridDirection* along = nullptr;  // the detected translation is the turned pitch up to its noise
   for (const dg::GridDirection& d : turned_grids[0].directions)
@@ -207,7 +212,7 @@ TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[gr
   // Ground truth from the mesh: two chimney stacks (separate parts of 10 triangles) per house.
   const std::size_t houses = components_of_size(prepared.model.mesh, 10) / 2;
   REQUIRE(houses == 17);
-  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
   REQUIRE(grids.size() == 1);
   REQUIRE(grids[0].directions.size() == 1);
   // The house at one end has its stacks beyond the last plane, the other's gable wall before the
