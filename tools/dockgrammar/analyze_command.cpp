@@ -15,7 +15,7 @@
 #include "grammar/grid_cut.h"
 #include "grammar/grid_rules.h"
 #include "grammar/grid_seams.h"
-#include "grammar/material_hint.h"
+#include "grammar/material_analysis.h"
 #include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
 
@@ -82,34 +82,24 @@ void add_analyze_command(CLI::App& app) {
     std::optional<MaterialHint> materials;
     if (material_hint_applies(prepared, options->model.prepare, grammar.grids.size())) {  // timed only when it runs
       const SymmetryOptions search = symmetry_options(options->search);
+      std::optional<GroupedMaterialAnalysis> grouped;
       if (options->geometry_only) {
         materials = material_hint(prepared, options->model.prepare, search, grammar.grids.size(), progress);
-        grammar_timings.push_back({"material hint", stopwatch.lap()});
-      } else if ((materials = material_grouping(prepared, options->model.prepare, search, grammar.grids.size(), progress))) {
-        const double hint_seconds = stopwatch.lap();
-        PreparedModel grouped = prepare_model(options->model.model_path, materials->options, progress);
-        SymmetryResult grouped_symmetries = detect_symmetries(grouped, search, progress);
-        const double grouped_search_seconds = stopwatch.lap();  // the grouped model's stages time themselves
-        std::vector<GridRule> rules = find_grids(grouped, grouped_symmetries, {}, progress);
-        if (rules.empty()) {
-          materials.reset();
-          grammar_timings.push_back({"material hint", hint_seconds + grouped_search_seconds + stopwatch.lap()});
-        } else {
-          // The stages so far become one line: the grouped model reports its own.
-          grammar_timings = {{"analysis by geometry alone (no grid)",
-                              total_seconds(prepared.timings) + total_seconds(symmetries.timings) + total_seconds(grammar_timings)},
-                             {"material hint", hint_seconds}};
-          prepared = std::move(grouped);
-          symmetries = std::move(grouped_symmetries);
-          materials->applied = true;
-          add_grids(std::move(rules));
-          for (const GridWithPieces& grid : grammar.grids) materials->grid_counts.push_back(exemplar_counts(grid.rule));
-          hint = tolerance_hint(prepared, symmetries, grammar.grids);
-          grammar_timings.push_back({"grid rules", stopwatch.lap()});
-        }
-      } else {
-        grammar_timings.push_back({"material hint", stopwatch.lap()});
+      } else if ((grouped = analyze_with_materials_grouped(options->model.model_path, prepared, options->model.prepare, search,
+                                                           grammar.grids.size(), progress))) {
+        // The stages so far become one line: the grouped model reports its own.
+        stopwatch.lap();
+        grammar_timings = {{"analysis by geometry alone (no grid)",
+                            total_seconds(prepared.timings) + total_seconds(symmetries.timings) + total_seconds(grammar_timings)},
+                           {"material hint", grouped->grouping_seconds}};
+        prepared = std::move(grouped->prepared);
+        symmetries = std::move(grouped->symmetries);
+        materials = std::move(grouped->hint);
+        add_grids(std::move(grouped->grids));
+        hint = tolerance_hint(prepared, symmetries, grammar.grids);
+        grammar_timings.push_back({"grid rules", grouped->grid_seconds + stopwatch.lap()});
       }
+      if (!grouped) grammar_timings.push_back({"material hint", stopwatch.lap()});
     }
     grammar.source_name = std::filesystem::path(options->model.model_path).filename().string();
     grammar.source_hash = file_hash(options->model.model_path);
