@@ -120,13 +120,14 @@ void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells,
 }
 
 // Chains with the most units between planes whose copies beyond the planes are counted (in the
-// order of the rest of the ranking) when the best of them has any.
+// order of the rest of the ranking) when the best of them has any, or, one per stretch of phases,
+// when the model leaves room for another unit beyond the best chain's.
 constexpr std::size_t kLongestChainsCounted = 16;
-// When the model leaves room for another unit beyond the best chain's, further chains with up to
-// kShorterChainLevels fewer units between planes (at least one) are counted too, in ranking order,
-// one per stretch of phases and kShorterChainsCounted in all: a phase whose planes cross thin
-// dividers fits fewer units between planes than one through the cells, but may reach whole copies
-// at both ends (a shelf's bottom and top rows, whose outer boards differ from its dividers).
+// With such room, further chains with up to kShorterChainLevels fewer units between planes are
+// counted too, in ranking order, one per stretch of phases and kShorterChainsCounted in all: a
+// phase whose planes cross thin dividers fits fewer units between planes than one through the
+// cells, but may reach whole copies at both ends (a shelf's bottom and top rows, whose outer
+// boards differ from its dividers; a bookshelf's first and last books, against its sides).
 // Moving the phase loses at most the plane at each end.
 constexpr int kShorterChainLevels = 2;
 constexpr std::size_t kShorterChainsCounted = 6;
@@ -483,8 +484,10 @@ std::optional<GridDirection> best_chain(const MotionPlanes& planes, const std::v
   std::size_t longest_counted = 1, shorter_counted = 0;
   for (std::size_t i = 1; i < chains.size(); ++i) {
     const Chain& chain = chains[i];
-    if (chain.count == longest && beyond) {
-      if (longest_counted == kLongestChainsCounted) continue;
+    if (chain.count == longest) {
+      if (longest_counted == kLongestChainsCounted ||
+          (!beyond && (!room || !stretches.insert(phase_stretch(planes, chain.phase)).second)))
+        continue;
       ++longest_counted;
     } else {
       if (!room || chain.count < longest - kShorterChainLevels || shorter_counted == kShorterChainsCounted ||

@@ -3,6 +3,7 @@
 #include "geometry/same_surface.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
+#include "geometry/topology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +46,47 @@ bool same_part(const TriangleMesh& a, const TriangleMesh& b, double tolerance, d
   return same_surface(a, b, tolerance);
 }
 
+// Own parts of a unit (connected components lying wholly in its slab) must make up at least this
+// share of its surface for copies of them beyond the planes to count as units.
+constexpr double kOwnPartsShare = 0.1;
+
+// The connected components of a mesh, to find copies of a unit's own parts.
+struct Parts {
+  std::vector<std::vector<std::size_t>> triangles;  // per part
+  std::vector<Vec3> centroids;                      // area-weighted
+  std::vector<double> areas;
+  std::vector<std::pair<double, double>> spans;     // extent along the direction
+  std::vector<std::pair<double, std::size_t>> by_position;  // (d . centroid, part), ascending
+};
+
+Parts mesh_parts(const TriangleMesh& mesh, const Vec3& d) {
+  std::size_t count = 0;
+  const std::vector<std::uint32_t> component = triangle_components(mesh, &count);
+  Parts parts;
+  parts.triangles.resize(count);
+  parts.centroids.assign(count, Vec3::Zero());
+  parts.areas.assign(count, 0.0);
+  parts.spans.assign(count, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::uint32_t c = component[t];
+    parts.triangles[c].push_back(t);
+    const auto [a, b, e] = mesh.corners(t);
+    const double area = 0.5 * mesh.area_vector(t).norm();
+    parts.centroids[c] += area * (a + b + e) / 3.0;
+    parts.areas[c] += area;
+    for (const Vec3& x : {a, b, e}) {
+      parts.spans[c].first = std::min(parts.spans[c].first, d.dot(x));
+      parts.spans[c].second = std::max(parts.spans[c].second, d.dot(x));
+    }
+  }
+  for (std::size_t c = 0; c < count; ++c) {
+    if (parts.areas[c] > 0.0) parts.centroids[c] /= parts.areas[c];
+    parts.by_position.emplace_back(d.dot(parts.centroids[c]), c);
+  }
+  std::sort(parts.by_position.begin(), parts.by_position.end());
+  return parts;
+}
+
 }  // namespace
 
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
@@ -84,17 +126,25 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     return it->second;
   };
   // Whether slab k, moved by the motion, is slab k + 1, as it is or, where one reaches an end of
-  // the model, without the end caps (the slab table's areas reject most slabs before they are cut).
-  auto copies_next = [&](int k) {
+  // the model, without the end caps (the slab table's areas reject most slabs before they are cut);
+  // or else both without the faces in the plane at `outer` (in slab k + 1's place), the outer
+  // plane of the slab beyond the units: where another part begins right at a unit's end (the
+  // side of a bookshelf against its last book), the slab holds that part's face.
+  auto copies_next = [&](int k, double outer) {
     const double a = slabs.area(k), b = slabs.area(k + 1);
     if (a > 0.0 && std::abs(a - b) <= kSameSlabArea * std::max(a, b) &&
         same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance))
       return true;
-    return (reaches_end(k) || reaches_end(k + 1)) && same_part(transformed(bare(k), direction.motion), bare(k + 1), tolerance);
+    const bool at_end = reaches_end(k) || reaches_end(k + 1);
+    const TriangleMesh moved = transformed(bare(k), direction.motion);
+    if (at_end && same_part(moved, bare(k + 1), tolerance)) return true;
+    // (A face in a plane may also fall in the slab on the plane's other side when the slabs are
+    // cut, against the slab table's areas.)
+    return same_part(without_faces_on(moved, d, outer, tolerance), without_faces_on(bare(k + 1), d, outer, tolerance), tolerance);
   };
   int head = 0, tail = 0;
-  while (copies_next(-head - 1)) ++head;
-  while (copies_next(direction.count + tail - 1)) ++tail;
+  while (copies_next(-head - 1, start - head * p)) ++head;
+  while (copies_next(direction.count + tail - 1, start + (direction.count + tail + 1) * p)) ++tail;
   // A unit split between the ends (a row of lockers cut between their handles): the part before
   // the first plane is the end of a unit and the part after the last plane its beginning, the two
   // one pitch long together. It counts as a unit kept in the head.
@@ -115,6 +165,52 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     constexpr double kSplitArea = 1e-2;
     split = same_part(head_moved, unit_part(lowest + p, before, lowest + p), tolerance, kSplitArea) &&
             same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance, kSplitArea);
+  }
+  // Units beyond whose own parts are copies of the repeated unit's, though the slabs are not (a
+  // colonnade's end columns, under the ends of its beam and steps): without a split unit, the walk
+  // goes on outward while every part lying wholly in the repeated unit's slab has a copy moved by
+  // the motion's power to that slab (the same surface within `tolerance`, the same area). Only a
+  // unit that repeats as a whole slab at least once may be counted so: two boxes on a sphere
+  // that every plane between them crosses are no row (copying a slab would copy part of the
+  // sphere).
+  if (!split && direction.count + head + tail >= 2) {
+    const Parts parts = mesh_parts(mesh, d);
+    const int unit = direction.head_units;  // the repeated unit's slab
+    const double unit_lo = start + unit * p, unit_hi = unit_lo + p;
+    std::vector<std::size_t> own;
+    double own_area = 0.0;
+    for (std::size_t c = 0; c < parts.triangles.size(); ++c)
+      if (parts.spans[c].first >= unit_lo - tolerance && parts.spans[c].second <= unit_hi + tolerance) {
+        own.push_back(c);
+        own_area += parts.areas[c];
+      }
+    std::map<std::size_t, TriangleMesh> own_meshes;
+    auto own_mesh = [&](std::size_t c) -> const TriangleMesh& {
+      auto [it, added] = own_meshes.try_emplace(c);
+      if (added) it->second = by_class(submesh(mesh, parts.triangles[c]));
+      return it->second;
+    };
+    // Whether part c moved by `motion` is a part of the mesh.
+    auto has_copy = [&](std::size_t c, const RigidTransform& motion) {
+      const Vec3 centre = motion.apply(parts.centroids[c]);
+      const double s = d.dot(centre);
+      auto it = std::lower_bound(parts.by_position.begin(), parts.by_position.end(), std::make_pair(s - tolerance, std::size_t{0}));
+      for (; it != parts.by_position.end() && it->first <= s + tolerance; ++it) {
+        const std::size_t other = it->second;
+        if ((parts.centroids[other] - centre).norm() <= tolerance &&
+            same_part(transformed(own_mesh(c), motion), by_class(submesh(mesh, parts.triangles[other])), tolerance))
+          return true;
+      }
+      return false;
+    };
+    auto parts_copied_to = [&](int k) {
+      const RigidTransform motion = power(direction.motion, k - unit);
+      return std::all_of(own.begin(), own.end(), [&](std::size_t c) { return has_copy(c, motion); });
+    };
+    if (!own.empty() && own_area >= kOwnPartsShare * slabs.area(unit)) {
+      while (parts_copied_to(-head - 1)) ++head;
+      while (parts_copied_to(direction.count + tail)) ++tail;
+    }
   }
   const int kept_in_head = head + (split ? 1 : 0);
   direction.split_unit = direction.split_unit || split;

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -113,13 +114,26 @@ std::size_t components_of_size(const dg::TriangleMesh& mesh, std::size_t size) {
   return static_cast<std::size_t>(std::count(sizes.begin(), sizes.end(), size));
 }
 
-// Connected components of `mesh` narrower than 0.05 along x (the lockers' handles).
-std::size_t narrow_components(const dg::TriangleMesh& mesh) {
+// Bounding boxes of the connected components of `mesh`.
+std::vector<dg::BoundingBox> component_boxes(const dg::TriangleMesh& mesh) {
   std::size_t count = 0;
   const std::vector<std::uint32_t> component = dg::triangle_components(mesh, &count);
   std::vector<dg::BoundingBox> boxes(count);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (const Vec3& corner : mesh.corners(t)) boxes[component[t]].add(corner);
+  return boxes;
+}
+
+// Connected components of `mesh` whose bounding box measures `size` (within 1e-6).
+std::size_t components_measuring(const dg::TriangleMesh& mesh, const Vec3& size) {
+  const std::vector<dg::BoundingBox> boxes = component_boxes(mesh);
+  return static_cast<std::size_t>(
+      std::count_if(boxes.begin(), boxes.end(), [&](const dg::BoundingBox& b) { return (b.size() - size).norm() < 1e-6; }));
+}
+
+// Connected components of `mesh` narrower than 0.05 along x (the lockers' handles).
+std::size_t narrow_components(const dg::TriangleMesh& mesh) {
+  const std::vector<dg::BoundingBox> boxes = component_boxes(mesh);
   return static_cast<std::size_t>(
       std::count_if(boxes.begin(), boxes.end(), [](const dg::BoundingBox& b) { return b.size().x() < 0.05; }));
 }
@@ -202,6 +216,104 @@ TEST_CASE("a row of keys on a plate that ends half a pitch beyond the last ones 
     if (std::abs(std::abs(d.direction.dot(turn * Vec3::UnitX())) - 1.0) < 1e-4) along = &d;
   REQUIRE(along != nullptr);
   CHECK(along->count == 12);
+}
+
+namespace {
+
+// A bookshelf of `books` per row: two sides 0.04 thick, a back, four boards and three rows of
+// books 0.15 wide at a pitch of 0.2, the first and last 0.025 from the sides.
+dg::TriangleMesh bookshelf(int books) {
+  const double width = 0.2 * books;
+  dg::TriangleMesh mesh;
+  dg::test::append(mesh, dg::test::make_box(Vec3(-0.04, -0.15, 0.0), Vec3(0.0, 0.15, 1.8)));
+  dg::test::append(mesh, dg::test::make_box(Vec3(width, -0.15, 0.0), Vec3(width + 0.04, 0.15, 1.8)));
+  dg::test::append(mesh, dg::test::make_box(Vec3(-0.04, 0.15, 0.0), Vec3(width + 0.04, 0.17, 1.8)));
+  for (int k = 0; k < 4; ++k) dg::test::append(mesh, dg::test::make_box(Vec3(0.0, -0.15, 0.58 * k), Vec3(width, 0.15, 0.58 * k + 0.04)));
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < books; ++i) {
+      const double x = 0.025 + 0.2 * i, z = 0.04 + 0.58 * k;
+      dg::test::append(mesh, dg::test::make_box(Vec3(x, -0.11, z), Vec3(x + 0.15, 0.11, z + 0.28)));
+    }
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a bookshelf counts every book, the first and last against its sides", "[grammar][grid]") {
+  // The sides begin where the first book's and the last book's units end (planes may not lie
+  // there: they hold the sides' faces), so those units are compared without the sides' faces.
+  dg::Model model;
+  model.mesh = bookshelf(10);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  const dg::GridDirection* row = direction_along(grids[0], Vec3(0.2, 0, 0));
+  const dg::GridDirection* rows = direction_along(grids[0], Vec3(0, 0, 0.58));
+  REQUIRE(row != nullptr);
+  REQUIRE(rows != nullptr);
+  CHECK(row->count == 10);
+  CHECK(rows->count == 3);
+  const std::size_t along = static_cast<std::size_t>(row - grids[0].directions.data());
+  std::vector<int> counts = dg::exemplar_counts(grids[0]);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  for (int n : {dg::lowest_count(grids[0], along), 5, 10, 13}) {
+    INFO(n << " books a row");
+    counts[along] = n;
+    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
+    CHECK(components_measuring(resized, Vec3(0.15, 0.22, 0.28)) == static_cast<std::size_t>(3 * n));  // books
+    CHECK(resized.bounds().size().x() == Approx(0.2 * n + 0.08).margin(1e-9));
+  }
+  // Resized to its own counts, the bookshelf is the exemplar.
+  counts[along] = 10;
+  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(same, bookshelf(10)) < 1e-3 * prepared.surface.eps());
+}
+
+namespace {
+
+// A colonnade of `columns` at a pitch of 2 (each a base, a shaft and a capital, separate boxes)
+// on three steps under a beam; the beam ends 0.3 beyond the outer capitals and the steps further,
+// so no slab around an end column is a copy of the others'.
+dg::TriangleMesh colonnade(int columns) {
+  const double length = 2.0 * columns;
+  dg::TriangleMesh mesh;
+  for (int k = 0; k < 3; ++k) {
+    const double margin = 0.3 - 0.2 * k;
+    dg::test::append(mesh, dg::test::make_box(Vec3(-margin, -0.5 + 0.2 * k, 0.2 * k), Vec3(length + margin, 2.5 - 0.2 * k, 0.2 * k + 0.2)));
+  }
+  for (int i = 0; i < columns; ++i) {
+    const double x = 1.0 + 2.0 * i;
+    dg::test::append(mesh, dg::test::make_box(Vec3(x - 0.4, 0.6, 0.6), Vec3(x + 0.4, 1.4, 0.7)));
+    dg::test::append(mesh, dg::test::make_box(Vec3(x - 0.25, 0.75, 0.7), Vec3(x + 0.25, 1.25, 3.7)));
+    dg::test::append(mesh, dg::test::make_box(Vec3(x - 0.4, 0.6, 3.7), Vec3(x + 0.4, 1.4, 3.8)));
+  }
+  dg::test::append(mesh, dg::test::make_box(Vec3(0.3, 0.3, 3.8), Vec3(length - 0.3, 1.7, 4.3)));
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a colonnade counts its end columns, whose slabs hold the ends of its beam and steps", "[grammar][grid]") {
+  // Planes fit 7 units; the eighth column stands in a slab with the beam's and steps' ends. Its
+  // parts (base, shaft, capital) are copies of the unit's own parts, so it counts, kept once.
+  dg::Model model;
+  model.mesh = colonnade(8);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const dg::GridDirection& row = grids[0].directions[0];
+  CHECK(std::abs(row.direction.x()) == Approx(1.0));
+  CHECK(row.count == 8);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  for (int n : {dg::lowest_count(grids[0], 0), 4, 8, 11}) {
+    INFO(n << " columns");
+    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {n}, prepared.surface.eps());
+    CHECK(components_measuring(resized, Vec3(0.5, 0.5, 3.0)) == static_cast<std::size_t>(n));  // shafts
+    CHECK(resized.bounds().size().x() == Approx(2.0 * n + 0.6).margin(1e-9));
+  }
+  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {8}, prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(same, colonnade(8)) < 1e-3 * prepared.surface.eps());
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
@@ -488,8 +600,9 @@ TEST_CASE("corpus: the Sweet Home 3D spiral staircase gives a 1-grid of its step
   CHECK(std::abs(screw.axis.y()) == Approx(1).margin(1e-3));  // the pole is vertical
   CHECK(std::abs(screw.slide) == Approx(rise).margin(2e-3));
   CHECK(screw.angle * 180 / 3.14159265358979 == Approx(22.5).margin(0.1));  // 16 steps per turn
-  // As for a fence: one unit per gap between treads.
-  CHECK(d.count == static_cast<int>(tread_tops.size()) - 1);
+  // One unit per tread (13 steps, balusters and fixings): the top step's slab also holds the
+  // rail's end, so it is kept once, counted because its parts are copies of the unit's.
+  CHECK(d.count == static_cast<int>(tread_tops.size()));
 }
 
 TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when its window tints count as one",
@@ -506,12 +619,15 @@ TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when 
   // Ground truth from the mesh: the most common gap between the window bands' lower edges
   // (lowest corner of each glass or blind triangle) is the floor pitch, the most common gap
   // between the pillars' left edges (grau70) the bay pitch.
-  std::vector<double> band_bottoms, pillar_lefts;
+  std::vector<double> band_bottoms, pillar_lefts, pillar_bottoms;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const std::string& name = materials[mesh.materials[t]].name;
     const auto [a, b, c] = mesh.corners(t);
     if (name.starts_with("glas") || name.starts_with("jalousie")) band_bottoms.push_back(std::min({a.y(), b.y(), c.y()}));
-    if (name == "grau70") pillar_lefts.push_back(std::min({a.x(), b.x(), c.x()}));
+    if (name == "grau70") {
+      pillar_lefts.push_back(std::min({a.x(), b.x(), c.x()}));
+      pillar_bottoms.push_back(std::min({a.y(), b.y(), c.y()}));
+    }
   }
   // The most common gap between distinct values (rounded to 1e-3) and the longest run of values
   // that gap apart.
@@ -546,8 +662,13 @@ TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when 
   }
   REQUIRE(floors != nullptr);
   REQUIRE(bays != nullptr);
-  // All the floors' window bands but the lowest and the highest lie between planes.
-  CHECK(floors->count >= bands - 2);
+  // One unit per floor with the facade's grey pillars (the floors from the ground up; the top
+  // floor, below the roof, has none and a different facade, so it stays in the tail).
+  std::set<long> pillar_floors;
+  for (double y : pillar_bottoms) pillar_floors.insert(std::lround(std::floor(y / floor_pitch + 1e-6)));
+  REQUIRE(pillar_floors.size() == 20);
+  CHECK(floors->count == static_cast<int>(pillar_floors.size()));
+  CHECK(floors->count >= bands - 1);
   // Structures on the roof stand across all bays but one, so planes through the whole building
   // fit one bay (the report says so); resizing adds bays there.
   CHECK(bays->count == 1);
