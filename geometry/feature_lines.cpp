@@ -99,19 +99,6 @@ class LineTracer {
   double cos_corner_;
 };
 
-// Turning angle per unit length at polyline vertex k (0 at open ends).
-double vertex_curvature(const std::vector<Vec3>& points, bool closed, std::size_t k) {
-  const std::size_t n = points.size();
-  if (!closed && (k == 0 || k + 1 == n)) return 0.0;
-  const Vec3& prev = points[(k + n - 1) % n];
-  const Vec3& next = points[(k + 1) % n];
-  const Vec3 in = points[k] - prev, out = next - points[k];
-  const double lengths = in.norm() + out.norm();
-  if (lengths <= 0.0) return 0.0;
-  const double cosine = std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0);
-  return 2.0 * std::acos(cosine) / lengths;
-}
-
 void sample_line(const TriangleMesh& mesh, std::uint32_t line_index, const FeatureLine& line, double spacing,
                  std::vector<FeatureSample>& samples) {
   std::vector<Vec3> points;
@@ -154,6 +141,18 @@ void sample_line(const TriangleMesh& mesh, std::uint32_t line_index, const Featu
 }
 
 }  // namespace
+
+double vertex_curvature(const std::vector<Vec3>& points, bool closed, std::size_t k) {
+  const std::size_t n = points.size();
+  if (!closed && (k == 0 || k + 1 == n)) return 0.0;
+  const Vec3& prev = points[(k + n - 1) % n];
+  const Vec3& next = points[(k + 1) % n];
+  const Vec3 in = points[k] - prev, out = next - points[k];
+  const double lengths = in.norm() + out.norm();
+  if (lengths <= 0.0) return 0.0;
+  const double cosine = std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0);
+  return 2.0 * std::acos(cosine) / lengths;
+}
 
 double FeatureLines::total_length() const {
   double sum = 0.0;

@@ -47,6 +47,10 @@ struct FeatureLines {
   double total_length() const;
 };
 
+/// Turning angle per unit length at vertex k of the polyline `points` (radians per model unit;
+/// 0 at the ends of an open one; a closed one turns at every vertex).
+double vertex_curvature(const std::vector<Vec3>& points, bool closed, std::size_t k);
+
 /// Chains `features` (from find_feature_edges on the same welded mesh) into lines, split at
 /// junctions, at corners turning by more than `corner_angle_degrees`, and where edges of different
 /// classes meet (boundary, material border, crease); resamples each line at a spacing of about `spacing` model units (open lines get

@@ -202,14 +202,16 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   auto more_units = [&](const GridDirection& a, const GridDirection& b) {
     return a.count != b.count ? a.count > b.count : axis_of(a) < axis_of(b);
   };
-  // A translation that is a power of a screw with more units (a full turn of a spiral stair that
-  // climbs more than one) gives way to the screw: its units hold several of the screw's.
-  const Vec3 middle = 0.5 * (prepared.cleaning.bounds.min + prepared.cleaning.bounds.max);
+  // A translation along a screw's axis by a whole number (two or more) of its slides gives way to
+  // the screw when that has more units: its units hold several of the screw's. It is a power of
+  // the screw (a full turn of a spiral stair that climbs more than one), or one composed with a
+  // turn that each unit survives (a chain whose links turn by a quarter turn each: two links on
+  // is a half turn of the screw and each link's own half turn).
   std::erase_if(translations, [&](const GridDirection& translation) {
     return std::any_of(screws.begin(), screws.end(), [&](const GridDirection& screw) {
       const int turn = static_cast<int>(std::lround(translation.pitch / screw.pitch));
-      return screw.count > translation.count && turn >= 2 &&
-             same_motion(power(screw.motion, turn), translation.motion, middle, prepared.surface.eps());
+      return screw.count > translation.count && turn >= 2 && !independent_of(translation.translation, {screw}) &&
+             std::abs(translation.pitch - turn * screw.pitch) <= prepared.surface.eps();
     });
   });
   std::stable_sort(translations.begin(), translations.end(), more_units);

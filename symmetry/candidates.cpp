@@ -249,6 +249,36 @@ std::vector<Keypoint> feature_keypoints(const FeatureLines& lines) {
   return keypoints;
 }
 
+std::vector<Keypoint> loop_keypoints(const FeatureLines& lines, const TriangleMesh& mesh) {
+  std::vector<Keypoint> keypoints;
+  for (const FeatureLine& line : lines.lines) {
+    if (!line.closed) continue;
+    const std::size_t n = line.vertices.size();
+    if (n < 3 || line.normals.size() < n) continue;
+    std::vector<Vec3> points;
+    for (std::uint32_t v : line.vertices) points.push_back(mesh.positions[v]);
+    for (std::size_t k = 0; k < n; ++k) {
+      // Edge e runs from vertex e to vertex e + 1; vertex k starts edge k and ends edge k - 1.
+      for (const auto& [edge, forward] : {std::pair{k, true}, std::pair{(k + n - 1) % n, false}}) {
+        const Vec3 along = points[(edge + 1) % n] - points[edge];
+        if (along.norm() <= 0.0) continue;
+        Keypoint key;
+        key.position = points[k];
+        key.tangent = (forward ? along : Vec3(-along)).normalized();
+        Vec3 normal = line.normals[edge] - line.normals[edge].dot(key.tangent) * key.tangent;
+        if (normal.norm() < 1e-9) normal = key.tangent.unitOrthogonal();
+        key.normal = normal.normalized();
+        key.binormal = key.tangent.cross(key.normal);
+        key.descriptor.dihedral_degrees = line.dihedrals[edge];
+        key.descriptor.kind = line.kind;
+        key.descriptor.curvature = vertex_curvature(points, true, k);
+        keypoints.push_back(key);
+      }
+    }
+  }
+  return keypoints;
+}
+
 RigidTransform canonical_motion(const RigidTransform& transform, double slide_tolerance) {
   // Below this angle (radians) a motion counts as a translation when choosing its direction.
   constexpr double translation_angle = 1e-3;

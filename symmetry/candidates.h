@@ -20,6 +20,13 @@ struct Keypoint {
 /// Ends of all open feature lines (two per line), in line order.
 std::vector<Keypoint> feature_keypoints(const FeatureLines& lines);
 
+/// For a mesh whose feature lines are all closed loops (rings of tori, rims of cylinders: no
+/// ends to align): keypoints at every vertex of every closed line of `mesh`, two per vertex, the
+/// tangent along the edge to the next vertex and along the edge to the previous one (a motion
+/// may map a loop onto another traversed the other way); normal and descriptor as the samples
+/// of that edge have them. Empty when there is no closed line.
+std::vector<Keypoint> loop_keypoints(const FeatureLines& lines, const TriangleMesh& mesh);
+
 struct CandidateOptions {
   double eps = 0.0;                     ///< voxel size, model units (required)
   double dihedral_tolerance_degrees = 5.0;

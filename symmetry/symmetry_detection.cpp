@@ -34,6 +34,10 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   std::vector<Keypoint> keypoints = prepared.model.is_point_cloud()
                                         ? cloud_keypoints(prepared.model.cloud, surface)
                                         : feature_keypoints(prepared.feature_lines);
+  // Feature lines that are all closed loops (the rings of a chain's links) have no ends: their
+  // vertices align instead.
+  const bool loops_only = keypoints.empty() && !prepared.model.is_point_cloud();
+  if (loops_only) keypoints = loop_keypoints(prepared.feature_lines, prepared.model.mesh);
   if (keypoints.size() > options.max_keypoints) {  // evenly thinned: voting and ICP scale with their number
     std::vector<Keypoint> thinned;
     for (std::size_t i = 0; i < options.max_keypoints; ++i) thinned.push_back(keypoints[i * keypoints.size() / options.max_keypoints]);
@@ -62,8 +66,9 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
     result.note = prepared.model.is_point_cloud()
                       ? (keypoints.empty() ? "no candidates: the point cloud has no creases or corners to align"
                                            : "no candidates: no two creases of the point cloud match under a rigid motion")
-                      : (keypoints.empty() ? "no candidates: the model has no feature-line ends (smooth or organic surface)"
-                                           : "no candidates: no two feature-line ends match under a rigid motion");
+                      : (keypoints.empty() ? "no candidates: the model has no feature lines (smooth or organic surface)"
+                         : loops_only ? "no candidates: its feature lines are closed loops, and no two of their vertices match under a rigid motion"
+                                      : "no candidates: no two feature-line ends match under a rigid motion");
     return result;
   }
   if (candidates.size() > options.max_verified) {

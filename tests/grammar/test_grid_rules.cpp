@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <set>
 #include <utility>
 #include <vector>
@@ -314,6 +315,31 @@ TEST_CASE("a colonnade counts its end columns, whose slabs hold the ends of its 
   }
   const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {8}, prepared.surface.eps());
   CHECK(dg::test::hausdorff_distance(same, colonnade(8)) < 1e-3 * prepared.surface.eps());
+}
+
+TEST_CASE("a chain of rings turned a quarter turn each gives a 1-grid of its links along the screw", "[grammar][grid]") {
+  // Two links on is a translation too (a half turn of the screw and each ring's own half turn),
+  // but its units would hold two links: the screw's, one link each, are the grid.
+  dg::Model model;
+  model.mesh = dg::test::make_chain(9);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const dg::GridDirection& links = grids[0].directions[0];
+  const dg::ScrewParameters screw = dg::screw_parameters(links.motion);
+  CHECK(screw.angle * 180.0 / std::numbers::pi == Approx(90.0).margin(1e-3));
+  CHECK(std::abs(screw.slide) == Approx(1.5).margin(1e-6));
+  CHECK(links.count == 9);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  for (int n : {dg::lowest_count(grids[0], 0), 4, 9, 13}) {
+    INFO(n << " links");
+    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {n}, prepared.surface.eps());
+    CHECK(component_boxes(resized).size() == static_cast<std::size_t>(n));  // one ring each
+    CHECK(resized.bounds().size().x() == Approx(1.5 * (n - 1) + 2.3).margin(1e-9));
+  }
+  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {9}, prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(same, dg::test::make_chain(9)) < 1e-3 * prepared.surface.eps());
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {

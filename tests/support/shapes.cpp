@@ -1,5 +1,7 @@
 #include "support/shapes.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <numbers>
 
@@ -40,6 +42,34 @@ TriangleMesh make_sphere(const Vec3& centre, double radius, int rings, int segme
     }
     mesh.triangles.push_back({ring_vertex(rings - 1, s), south, ring_vertex(rings - 1, s + 1)});
   }
+  return mesh;
+}
+
+TriangleMesh make_torus(const Vec3& centre, const Eigen::Matrix3d& frame, double radius, double tube_radius, int segments,
+                        int tube_segments) {
+  TriangleMesh mesh;
+  for (int i = 0; i < segments; ++i) {
+    const double u = 2.0 * std::numbers::pi * i / segments;
+    for (int j = 0; j < tube_segments; ++j) {
+      const double v = 2.0 * std::numbers::pi * j / tube_segments;
+      const double ring = radius + tube_radius * std::cos(v);
+      mesh.positions.push_back(centre + frame * Vec3(ring * std::cos(u), ring * std::sin(u), tube_radius * std::sin(v)));
+    }
+  }
+  const auto vertex = [&](int i, int j) { return static_cast<std::uint32_t>((i % segments) * tube_segments + (j % tube_segments)); };
+  for (int i = 0; i < segments; ++i)
+    for (int j = 0; j < tube_segments; ++j) {
+      mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+      mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+    }
+  return mesh;
+}
+
+TriangleMesh make_chain(int links) {
+  TriangleMesh mesh;
+  const Eigen::Matrix3d turned = Eigen::AngleAxisd(0.5 * std::numbers::pi, Vec3::UnitX()).toRotationMatrix();
+  for (int k = 0; k < links; ++k)
+    append(mesh, make_torus(Vec3(1.5 * k, 0.0, 0.0), k % 2 == 0 ? Eigen::Matrix3d::Identity() : turned, 1.0, 0.15, 20, 8));
   return mesh;
 }
 

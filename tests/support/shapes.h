@@ -11,6 +11,18 @@ TriangleMesh make_box(const Vec3& lo, const Vec3& hi);
 /// Closed UV sphere of radius `radius` around `centre` with `rings` x `segments` quads.
 TriangleMesh make_sphere(const Vec3& centre, double radius, int rings, int segments);
 
+/// Closed, outward-oriented torus: the tube of radius `tube_radius` around the circle of radius
+/// `radius` in the plane through `centre` spanned by the first two columns of `frame` (its axis
+/// the third), as `segments` x `tube_segments` quads.
+TriangleMesh make_torus(const Vec3& centre, const Eigen::Matrix3d& frame, double radius, double tube_radius, int segments,
+                        int tube_segments);
+
+/// A chain of `links` interlocking rings (make_torus: radius 1, tube 0.15, 20 x 8 quads) centred
+/// at x = 1.5 k, k = 0 .. links - 1: even ones in the x-y plane, odd ones turned a quarter turn
+/// about x into the x-z plane. Its feature lines (the tube's edges turn by 45 degrees) are all
+/// closed loops.
+TriangleMesh make_chain(int links);
+
 /// Appends `part` to `mesh` (indices shifted).
 void append(TriangleMesh& mesh, const TriangleMesh& part);
 

@@ -7,6 +7,7 @@
 #include "grammar/grid_rules.h"
 #include "support/corpus.h"
 #include "support/shapes.h"
+#include "symmetry/candidates.h"
 #include "symmetry/pinned_area.h"
 
 #include <catch2/catch.hpp>
@@ -133,6 +134,37 @@ TEST_CASE("spiral stairs: a screw motion with the step's angle and rise", "[symm
   CHECK(std::abs(screw.slide) == Approx(0.18).margin(1e-6));
   CHECK(std::abs(std::abs(screw.axis.z()) - 1.0) < 1e-9);
   CHECK(screw_family->count >= 10);
+}
+
+TEST_CASE("a chain of rings, whose feature lines are all closed loops, gets its screw from the loops' vertices",
+          "[symmetry]") {
+  dg::Model model;
+  model.mesh = dg::test::make_chain(9);
+  const Detected d = detect_model(std::move(model));
+  // No line has an end to align: every feature line is a closed loop around a ring's tube.
+  const dg::FeatureLines& lines = d.prepared.feature_lines;
+  REQUIRE(!lines.lines.empty());
+  std::size_t loop_vertices = 0;
+  for (const dg::FeatureLine& line : lines.lines) {
+    CHECK(line.closed);
+    loop_vertices += line.vertices.size();
+  }
+  CHECK(dg::feature_keypoints(lines).empty());
+  CHECK(dg::loop_keypoints(lines, d.prepared.model.mesh).size() == 2 * loop_vertices);
+  // The chain's motion: a quarter turn about x and one link on (1.5); two links on, a translation.
+  const dg::SymmetryFamily* screw_family = nullptr;
+  bool two_links = false;
+  for (const auto& family : d.result.families) {
+    const dg::ScrewParameters screw = dg::screw_parameters(family.generator);
+    if (family.kind == "screw" && std::abs(degrees(family.generator.angle()) - 90.0) < 1e-3 &&
+        std::abs(std::abs(screw.slide) - 1.5) < 1e-6)
+      screw_family = &family;
+    if (family.kind == "translation" && (family.generator.translation.cwiseAbs() - Vec3(3.0, 0, 0)).norm() < 1e-6) two_links = true;
+  }
+  REQUIRE(screw_family != nullptr);
+  CHECK(std::abs(std::abs(dg::screw_parameters(screw_family->generator).axis.x()) - 1.0) < 1e-9);
+  CHECK(d.result.symmetries[screw_family->members.front()].r_symmetric_fraction > 0.85);  // all links but the last
+  CHECK(two_links);
 }
 
 TEST_CASE("facade and messy facade: two independent translations (column and row pitch)", "[symmetry]") {
