@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <utility>
 
 namespace dg {
 namespace {
@@ -59,6 +60,7 @@ struct Parts {
   std::vector<std::pair<double, std::size_t>> by_position;  // (d . centroid, part), ascending
 };
 
+// The connected components of `mesh`, their extents and positions measured along d.
 Parts mesh_parts(const TriangleMesh& mesh, const Vec3& d) {
   std::size_t count = 0;
   const std::vector<std::uint32_t> component = triangle_components(mesh, &count);
@@ -87,6 +89,59 @@ Parts mesh_parts(const TriangleMesh& mesh, const Vec3& d) {
   return parts;
 }
 
+// `mesh` with its material indices replaced by their classes (`classes` empty: materials not
+// matched, so dropped).
+TriangleMesh with_material_classes(TriangleMesh mesh, std::span<const std::uint32_t> classes) {
+  if (classes.empty()) mesh.materials.clear();
+  for (std::uint32_t& m : mesh.materials) m = classes[m];
+  return mesh;
+}
+
+// Units beyond a direction's planes, past the `head` and `tail` units counted so far, whose own
+// parts are copies of the repeated unit's though their slabs are not (a colonnade's end columns,
+// under the ends of its beam and steps): the walk goes outward at each end while every connected
+// part lying wholly in the repeated unit's slab (of area `unit_area`) has a copy moved by the
+// motion's power to that slab (centroids within `tolerance`, the same surface, the same area).
+// Nothing when those parts make up less than kOwnPartsShare of the slab. Returns the units found
+// before the head and after the tail.
+std::pair<int, int> units_by_own_parts(const GridDirection& direction, const TriangleMesh& mesh, double tolerance,
+                                       std::span<const std::uint32_t> material_classes, double unit_area, int head, int tail) {
+  const Vec3& d = direction.direction;
+  const Parts parts = mesh_parts(mesh, d);
+  const int unit = direction.head_units;  // the repeated unit's slab
+  const double unit_lo = direction.cut + unit * direction.pitch, unit_hi = unit_lo + direction.pitch;
+  std::vector<std::size_t> own;
+  double own_area = 0.0;
+  for (std::size_t c = 0; c < parts.triangles.size(); ++c)
+    if (parts.spans[c].first >= unit_lo - tolerance && parts.spans[c].second <= unit_hi + tolerance) {
+      own.push_back(c);
+      own_area += parts.areas[c];
+    }
+  if (own.empty() || own_area < kOwnPartsShare * unit_area) return {0, 0};
+  auto part_mesh = [&](std::size_t c) { return with_material_classes(submesh(mesh, parts.triangles[c]), material_classes); };
+  std::map<std::size_t, TriangleMesh> own_meshes;
+  for (std::size_t c : own) own_meshes.emplace(c, part_mesh(c));
+  // Whether part c moved by `motion` is a part of the mesh.
+  auto has_copy = [&](std::size_t c, const RigidTransform& motion) {
+    const Vec3 centre = motion.apply(parts.centroids[c]);
+    const double s = d.dot(centre);
+    auto it = std::lower_bound(parts.by_position.begin(), parts.by_position.end(), std::make_pair(s - tolerance, std::size_t{0}));
+    for (; it != parts.by_position.end() && it->first <= s + tolerance; ++it)
+      if ((parts.centroids[it->second] - centre).norm() <= tolerance &&
+          same_part(transformed(own_meshes.at(c), motion), part_mesh(it->second), tolerance))
+        return true;
+    return false;
+  };
+  auto copied_to = [&](int k) {
+    const RigidTransform motion = power(direction.motion, k - unit);
+    return std::all_of(own.begin(), own.end(), [&](std::size_t c) { return has_copy(c, motion); });
+  };
+  int before = 0, after = 0;
+  while (copied_to(-head - before - 1)) ++before;
+  while (copied_to(direction.count + tail + after)) ++after;
+  return {before, after};
+}
+
 }  // namespace
 
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
@@ -99,11 +154,7 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     lowest = std::min(lowest, d.dot(x));
     highest = std::max(highest, d.dot(x));
   }
-  auto by_class = [&](TriangleMesh cut) {
-    if (material_classes.empty()) cut.materials.clear();
-    for (std::uint32_t& m : cut.materials) m = material_classes[m];
-    return cut;
-  };
+  auto by_class = [&](TriangleMesh cut) { return with_material_classes(std::move(cut), material_classes); };
   // Faces in the model's first and last plane across the direction (the end caps of a plate
   // that the units stand on) are no part of a unit: slabs that reach them are compared without.
   auto without_caps = [&](const TriangleMesh& part) {
@@ -166,51 +217,15 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     split = same_part(head_moved, unit_part(lowest + p, before, lowest + p), tolerance, kSplitArea) &&
             same_part(tail_moved, unit_part(last - p, after, highest - p), tolerance, kSplitArea);
   }
-  // Units beyond whose own parts are copies of the repeated unit's, though the slabs are not (a
-  // colonnade's end columns, under the ends of its beam and steps): without a split unit, the walk
-  // goes on outward while every part lying wholly in the repeated unit's slab has a copy moved by
-  // the motion's power to that slab (the same surface within `tolerance`, the same area). Only a
-  // unit that repeats as a whole slab at least once may be counted so: two boxes on a sphere
-  // that every plane between them crosses are no row (copying a slab would copy part of the
-  // sphere).
+  // Units beyond whose own parts are copies of the repeated unit's, though the slabs are not.
+  // Only a unit that repeats as a whole slab at least once may be counted so: two boxes on a
+  // sphere that every plane between them crosses are no row (copying a slab would copy part of
+  // the sphere).
   if (!split && direction.count + head + tail >= 2) {
-    const Parts parts = mesh_parts(mesh, d);
-    const int unit = direction.head_units;  // the repeated unit's slab
-    const double unit_lo = start + unit * p, unit_hi = unit_lo + p;
-    std::vector<std::size_t> own;
-    double own_area = 0.0;
-    for (std::size_t c = 0; c < parts.triangles.size(); ++c)
-      if (parts.spans[c].first >= unit_lo - tolerance && parts.spans[c].second <= unit_hi + tolerance) {
-        own.push_back(c);
-        own_area += parts.areas[c];
-      }
-    std::map<std::size_t, TriangleMesh> own_meshes;
-    auto own_mesh = [&](std::size_t c) -> const TriangleMesh& {
-      auto [it, added] = own_meshes.try_emplace(c);
-      if (added) it->second = by_class(submesh(mesh, parts.triangles[c]));
-      return it->second;
-    };
-    // Whether part c moved by `motion` is a part of the mesh.
-    auto has_copy = [&](std::size_t c, const RigidTransform& motion) {
-      const Vec3 centre = motion.apply(parts.centroids[c]);
-      const double s = d.dot(centre);
-      auto it = std::lower_bound(parts.by_position.begin(), parts.by_position.end(), std::make_pair(s - tolerance, std::size_t{0}));
-      for (; it != parts.by_position.end() && it->first <= s + tolerance; ++it) {
-        const std::size_t other = it->second;
-        if ((parts.centroids[other] - centre).norm() <= tolerance &&
-            same_part(transformed(own_mesh(c), motion), by_class(submesh(mesh, parts.triangles[other])), tolerance))
-          return true;
-      }
-      return false;
-    };
-    auto parts_copied_to = [&](int k) {
-      const RigidTransform motion = power(direction.motion, k - unit);
-      return std::all_of(own.begin(), own.end(), [&](std::size_t c) { return has_copy(c, motion); });
-    };
-    if (!own.empty() && own_area >= kOwnPartsShare * slabs.area(unit)) {
-      while (parts_copied_to(-head - 1)) ++head;
-      while (parts_copied_to(direction.count + tail)) ++tail;
-    }
+    const auto [more_head, more_tail] =
+        units_by_own_parts(direction, mesh, tolerance, material_classes, slabs.area(direction.head_units), head, tail);
+    head += more_head;
+    tail += more_tail;
   }
   const int kept_in_head = head + (split ? 1 : 0);
   direction.split_unit = direction.split_unit || split;
