@@ -121,14 +121,15 @@ void choose_repeated_unit(GridDirection& direction, const SlabCells& slab_cells,
 
 // Chains with the most units between planes whose copies beyond the planes are counted (in the
 // order of the rest of the ranking) when the best of them has any, or, one per stretch of phases,
-// when the model leaves room for another unit beyond the best chain's.
+// when the model leaves room for another unit beyond the best chain's (the phase decides whether
+// whole copies remain at the ends: a chain of rings reaches its end rings at one phase).
 constexpr std::size_t kLongestChainsCounted = 16;
 // With such room, further chains with up to kShorterChainLevels fewer units between planes are
-// counted too, in ranking order, one per stretch of phases and kShorterChainsCounted in all: a
-// phase whose planes cross thin dividers fits fewer units between planes than one through the
-// cells, but may reach whole copies at both ends (a shelf's bottom and top rows, whose outer
-// boards differ from its dividers; a bookshelf's first and last books, against its sides).
-// Moving the phase loses at most the plane at each end.
+// counted too, in ranking order, one per stretch of phases and kShorterChainsCounted in all (the
+// chains as long as the best once used them up): a phase whose planes cross thin dividers fits
+// fewer units between planes than one through the cells, but may reach whole copies at both ends
+// (a shelf's bottom and top rows, whose outer boards differ from its dividers; a bookshelf's
+// first and last books, against its sides). Moving the phase loses at most the plane at each end.
 constexpr int kShorterChainLevels = 2;
 constexpr std::size_t kShorterChainsCounted = 6;
 
@@ -155,6 +156,8 @@ struct MotionPlanes {
   std::map<double, int> phases{};  // offset of the planes in [0, pitch) (up to rounding) -> vertices on a plane there
   std::vector<double> vertex_phases{};  // the phases holding vertices, ascending
   std::vector<double> face_planes{};    // positions of the planes that hold a whole face, ascending
+  // The mesh measured along d for counting end units, once the first chain needs it.
+  mutable std::optional<MeshAlong> along{};
 };
 
 // How far from a plane a face's corners may lie for the plane to hold the face (rounding).
@@ -290,8 +293,10 @@ GridDirection unsettled(const MotionPlanes& planes, double first, int count) {
 
 // With a copy tolerance, the copies of the direction's unit beyond its planes join its count.
 void count_copies_beyond(const MotionPlanes& planes, GridDirection& direction) {
-  if (planes.search.copy_tolerance > 0.0)
-    count_end_units(direction, planes.prepared.model.mesh, planes.search.copy_tolerance, planes.prepared.material_classes);
+  if (planes.search.copy_tolerance <= 0.0) return;
+  const TriangleMesh& mesh = planes.prepared.model.mesh;
+  if (!planes.along) planes.along = measure_along(mesh, planes.d);
+  count_end_units(direction, mesh, planes.search.copy_tolerance, planes.prepared.material_classes, &*planes.along);
 }
 
 // The chain starting at `first` with `count` units, its repeated unit chosen and the copies

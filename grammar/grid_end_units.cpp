@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 namespace dg {
@@ -51,44 +52,6 @@ bool same_part(const TriangleMesh& a, const TriangleMesh& b, double tolerance, d
 // share of its surface for copies of them beyond the planes to count as units.
 constexpr double kOwnPartsShare = 0.1;
 
-// The connected components of a mesh, to find copies of a unit's own parts.
-struct Parts {
-  std::vector<std::vector<std::size_t>> triangles;  // per part
-  std::vector<Vec3> centroids;                      // area-weighted
-  std::vector<double> areas;
-  std::vector<std::pair<double, double>> spans;     // extent along the direction
-  std::vector<std::pair<double, std::size_t>> by_position;  // (d . centroid, part), ascending
-};
-
-// The connected components of `mesh`, their extents and positions measured along d.
-Parts mesh_parts(const TriangleMesh& mesh, const Vec3& d) {
-  std::size_t count = 0;
-  const std::vector<std::uint32_t> component = triangle_components(mesh, &count);
-  Parts parts;
-  parts.triangles.resize(count);
-  parts.centroids.assign(count, Vec3::Zero());
-  parts.areas.assign(count, 0.0);
-  parts.spans.assign(count, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::uint32_t c = component[t];
-    parts.triangles[c].push_back(t);
-    const auto [a, b, e] = mesh.corners(t);
-    const double area = 0.5 * mesh.area_vector(t).norm();
-    parts.centroids[c] += area * (a + b + e) / 3.0;
-    parts.areas[c] += area;
-    for (const Vec3& x : {a, b, e}) {
-      parts.spans[c].first = std::min(parts.spans[c].first, d.dot(x));
-      parts.spans[c].second = std::max(parts.spans[c].second, d.dot(x));
-    }
-  }
-  for (std::size_t c = 0; c < count; ++c) {
-    if (parts.areas[c] > 0.0) parts.centroids[c] /= parts.areas[c];
-    parts.by_position.emplace_back(d.dot(parts.centroids[c]), c);
-  }
-  std::sort(parts.by_position.begin(), parts.by_position.end());
-  return parts;
-}
-
 // `mesh` with its material indices replaced by their classes (`classes` empty: materials not
 // matched, so dropped).
 TriangleMesh with_material_classes(TriangleMesh mesh, std::span<const std::uint32_t> classes) {
@@ -104,30 +67,31 @@ TriangleMesh with_material_classes(TriangleMesh mesh, std::span<const std::uint3
 // motion's power to that slab (centroids within `tolerance`, the same surface, the same area).
 // Nothing when those parts make up less than kOwnPartsShare of the slab. Returns the units found
 // before the head and after the tail.
-std::pair<int, int> units_by_own_parts(const GridDirection& direction, const TriangleMesh& mesh, double tolerance,
-                                       std::span<const std::uint32_t> material_classes, double unit_area, int head, int tail) {
+std::pair<int, int> units_by_own_parts(const GridDirection& direction, const TriangleMesh& mesh, const MeshAlong& parts,
+                                       double tolerance, std::span<const std::uint32_t> material_classes, double unit_area,
+                                       int head, int tail) {
   const Vec3& d = direction.direction;
-  const Parts parts = mesh_parts(mesh, d);
   const int unit = direction.head_units;  // the repeated unit's slab
   const double unit_lo = direction.cut + unit * direction.pitch, unit_hi = unit_lo + direction.pitch;
   std::vector<std::size_t> own;
   double own_area = 0.0;
-  for (std::size_t c = 0; c < parts.triangles.size(); ++c)
-    if (parts.spans[c].first >= unit_lo - tolerance && parts.spans[c].second <= unit_hi + tolerance) {
+  for (std::size_t c = 0; c < parts.part_triangles.size(); ++c)
+    if (parts.part_spans[c].first >= unit_lo - tolerance && parts.part_spans[c].second <= unit_hi + tolerance) {
       own.push_back(c);
-      own_area += parts.areas[c];
+      own_area += parts.part_areas[c];
     }
   if (own.empty() || own_area < kOwnPartsShare * unit_area) return {0, 0};
-  auto part_mesh = [&](std::size_t c) { return with_material_classes(submesh(mesh, parts.triangles[c]), material_classes); };
+  auto part_mesh = [&](std::size_t c) { return with_material_classes(submesh(mesh, parts.part_triangles[c]), material_classes); };
   std::map<std::size_t, TriangleMesh> own_meshes;
   for (std::size_t c : own) own_meshes.emplace(c, part_mesh(c));
   // Whether part c moved by `motion` is a part of the mesh.
   auto has_copy = [&](std::size_t c, const RigidTransform& motion) {
-    const Vec3 centre = motion.apply(parts.centroids[c]);
+    const Vec3 centre = motion.apply(parts.part_centroids[c]);
     const double s = d.dot(centre);
-    auto it = std::lower_bound(parts.by_position.begin(), parts.by_position.end(), std::make_pair(s - tolerance, std::size_t{0}));
-    for (; it != parts.by_position.end() && it->first <= s + tolerance; ++it)
-      if ((parts.centroids[it->second] - centre).norm() <= tolerance &&
+    auto it = std::lower_bound(parts.parts_by_position.begin(), parts.parts_by_position.end(),
+                               std::make_pair(s - tolerance, std::size_t{0}));
+    for (; it != parts.parts_by_position.end() && it->first <= s + tolerance; ++it)
+      if ((parts.part_centroids[it->second] - centre).norm() <= tolerance &&
           same_part(transformed(own_meshes.at(c), motion), part_mesh(it->second), tolerance))
         return true;
     return false;
@@ -144,16 +108,50 @@ std::pair<int, int> units_by_own_parts(const GridDirection& direction, const Tri
 
 }  // namespace
 
+MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction) {
+  const Vec3& d = direction;
+  MeshAlong along;
+  along.direction = d;
+  along.lowest = std::numeric_limits<double>::infinity();
+  along.highest = -along.lowest;
+  for (const Vec3& x : mesh.positions) {
+    along.lowest = std::min(along.lowest, d.dot(x));
+    along.highest = std::max(along.highest, d.dot(x));
+  }
+  std::size_t count = 0;
+  const std::vector<std::uint32_t> component = triangle_components(mesh, &count);
+  along.part_triangles.resize(count);
+  along.part_centroids.assign(count, Vec3::Zero());
+  along.part_areas.assign(count, 0.0);
+  along.part_spans.assign(count, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::uint32_t c = component[t];
+    along.part_triangles[c].push_back(t);
+    const auto [a, b, e] = mesh.corners(t);
+    const double area = 0.5 * mesh.area_vector(t).norm();
+    along.part_centroids[c] += area * (a + b + e) / 3.0;
+    along.part_areas[c] += area;
+    const double sa = d.dot(a), sb = d.dot(b), se = d.dot(e);
+    along.part_spans[c].first = std::min({along.part_spans[c].first, sa, sb, se});
+    along.part_spans[c].second = std::max({along.part_spans[c].second, sa, sb, se});
+  }
+  for (std::size_t c = 0; c < count; ++c) {
+    if (along.part_areas[c] > 0.0) along.part_centroids[c] /= along.part_areas[c];
+    along.parts_by_position.emplace_back(d.dot(along.part_centroids[c]), c);
+  }
+  std::sort(along.parts_by_position.begin(), along.parts_by_position.end());
+  return along;
+}
+
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
-                    std::span<const std::uint32_t> material_classes) {
+                    std::span<const std::uint32_t> material_classes, const MeshAlong* measured) {
   const Vec3& d = direction.direction;
   const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
-  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-  for (const Vec3& x : mesh.positions) {
-    lowest = std::min(lowest, d.dot(x));
-    highest = std::max(highest, d.dot(x));
-  }
+  std::optional<MeshAlong> measured_here;
+  if (!measured) measured = &measured_here.emplace(measure_along(mesh, d));
+  const double lowest = measured->lowest, highest = measured->highest;
+
   auto by_class = [&](TriangleMesh cut) { return with_material_classes(std::move(cut), material_classes); };
   // Faces in the model's first and last plane across the direction (the end caps of a plate
   // that the units stand on) are no part of a unit: slabs that reach them are compared without.
@@ -176,22 +174,27 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     if (added) it->second = reaches_end(k) ? without_caps(slab(k)) : slab(k);
     return it->second;
   };
-  // Whether slab k, moved by the motion, is slab k + 1, as it is or, where one reaches an end of
-  // the model, without the end caps (the slab table's areas reject most slabs before they are cut);
-  // or else both without the faces in the plane at `outer` (in slab k + 1's place), the outer
-  // plane of the slab beyond the units: where another part begins right at a unit's end (the
-  // side of a bookshelf against its last book), the slab holds that part's face.
+  // Whether slab k, moved by the motion, is slab k + 1, as it is (the slab table's areas reject
+  // most slabs before they are cut) or, where one reaches an end of the model, without the end
+  // caps; or else both without the faces in the plane at `outer` (in slab k + 1's place), the
+  // outer plane of the slab beyond the units: where another part begins right at a unit's end
+  // (the side of a bookshelf against its last book), the slab holds that part's face.
   auto copies_next = [&](int k, double outer) {
     const double a = slabs.area(k), b = slabs.area(k + 1);
-    if (a > 0.0 && std::abs(a - b) <= kSameSlabArea * std::max(a, b) &&
-        same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance))
-      return true;
+    const bool same_table_area = a > 0.0 && std::abs(a - b) <= kSameSlabArea * std::max(a, b);
+    if (same_table_area && same_surface(transformed(slab(k), direction.motion), slab(k + 1), tolerance)) return true;
     const bool at_end = reaches_end(k) || reaches_end(k + 1);
     const TriangleMesh moved = transformed(bare(k), direction.motion);
     if (at_end && same_part(moved, bare(k + 1), tolerance)) return true;
     // (A face in a plane may also fall in the slab on the plane's other side when the slabs are
-    // cut, against the slab table's areas.)
-    return same_part(without_faces_on(moved, d, outer, tolerance), without_faces_on(bare(k + 1), d, outer, tolerance), tolerance);
+    // cut, against the slab table's areas; slivers the cut leaves at the plane go too.) Meshes
+    // that lose nothing were compared above, unless the table's areas kept them apart.
+    const TriangleMesh open_moved = without_faces_on(moved, d, outer, tolerance);
+    const TriangleMesh open_next = without_faces_on(bare(k + 1), d, outer, tolerance);
+    const bool stripped =
+        open_moved.triangles.size() < moved.triangles.size() || open_next.triangles.size() < bare(k + 1).triangles.size();
+    if (!stripped && (same_table_area || at_end)) return false;
+    return same_part(open_moved, open_next, tolerance);
   };
   int head = 0, tail = 0;
   while (copies_next(-head - 1, start - head * p)) ++head;
@@ -223,7 +226,7 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
   // the sphere).
   if (!split && direction.count + head + tail >= 2) {
     const auto [more_head, more_tail] =
-        units_by_own_parts(direction, mesh, tolerance, material_classes, slabs.area(direction.head_units), head, tail);
+        units_by_own_parts(direction, mesh, *measured, tolerance, material_classes, slabs.area(direction.head_units), head, tail);
     head += more_head;
     tail += more_tail;
   }

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace dg {
 
@@ -36,7 +38,25 @@ inline constexpr double kSameSlabArea = 1e-4;
 /// copy of the repeated unit. Materials are compared by `material_classes` (the class of each
 /// material index, as the symmetries matched them: random tints grouped as one); empty (materials
 /// not matched) compares the shapes alone. Returns the units added.
+/// A mesh measured along one direction for count_end_units: its extent and its connected parts.
+/// A motion's search counts end units for many chains along one direction, so it measures once.
+struct MeshAlong {
+  Vec3 direction = Vec3::UnitX();
+  double lowest = 0.0, highest = 0.0;  ///< extent along the direction, model units
+  /// Connected components: their triangles, area-weighted centroids, areas and extents along the
+  /// direction; and (centroid position along the direction, part), ascending.
+  std::vector<std::vector<std::size_t>> part_triangles;
+  std::vector<Vec3> part_centroids;
+  std::vector<double> part_areas;
+  std::vector<std::pair<double, double>> part_spans;
+  std::vector<std::pair<double, std::size_t>> parts_by_position;
+};
+
+/// Measures `mesh` along the unit vector `direction` for count_end_units.
+MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction);
+
+/// `measured`: measure_along(mesh, direction.direction), or null to measure here.
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
-                    std::span<const std::uint32_t> material_classes);
+                    std::span<const std::uint32_t> material_classes, const MeshAlong* measured = nullptr);
 
 }  // namespace dg
