@@ -111,7 +111,6 @@ std::pair<int, int> units_by_own_parts(const GridDirection& direction, const Tri
 MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction) {
   const Vec3& d = direction;
   MeshAlong along;
-  along.direction = d;
   along.lowest = std::numeric_limits<double>::infinity();
   along.highest = -along.lowest;
   for (const Vec3& x : mesh.positions) {
@@ -170,8 +169,9 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     return it->second;
   };
   auto bare = [&](int k) -> const TriangleMesh& {
+    if (!reaches_end(k)) return slab(k);
     auto [it, added] = bare_meshes.try_emplace(k);
-    if (added) it->second = reaches_end(k) ? without_caps(slab(k)) : slab(k);
+    if (added) it->second = without_caps(slab(k));
     return it->second;
   };
   // Whether slab k, moved by the motion, is slab k + 1, as it is (the slab table's areas reject

@@ -18,7 +18,6 @@ inline constexpr double kSameSlabArea = 1e-4;
 /// A mesh measured along one direction for count_end_units: its extent and its connected parts.
 /// A motion's search counts end units for many chains along one direction, so it measures once.
 struct MeshAlong {
-  Vec3 direction = Vec3::UnitX();
   double lowest = 0.0, highest = 0.0;  ///< extent along the direction, model units
   /// Connected components: their triangles, area-weighted centroids, areas and extents along the
   /// direction; and (centroid position along the direction, part), ascending.

@@ -47,6 +47,33 @@ std::vector<dg::GridRule> grids_of(const dg::PreparedModel& prepared) {
   return dg::find_grids(prepared, dg::detect_symmetries(prepared));
 }
 
+// A shape built in code, prepared, with its only grid (the test stops when it has not exactly
+// one) and that grid's pieces.
+struct OneGrid {
+  dg::PreparedModel prepared;
+  dg::GridRule grid;
+  std::vector<dg::GridPiece> pieces;
+};
+
+OneGrid one_grid(dg::TriangleMesh mesh) {
+  dg::Model model;
+  model.mesh = std::move(mesh);
+  OneGrid one{dg::prepare_model(std::move(model)), {}, {}};
+  std::vector<dg::GridRule> grids = grids_of(one.prepared);
+  REQUIRE(grids.size() == 1);
+  one.grid = std::move(grids[0]);
+  one.pieces = dg::cut_grid_pieces(one.prepared.model.mesh, one.grid, one.prepared.surface.eps());
+  return one;
+}
+
+// `one`'s grid resized to n units in direction `along`, the other directions at the exemplar's
+// counts.
+dg::TriangleMesh resized_along(const OneGrid& one, std::size_t along, int n) {
+  std::vector<int> counts = dg::exemplar_counts(one.grid);
+  counts[along] = n;
+  return dg::resize_grid(one.grid, one.pieces, counts, one.prepared.surface.eps());
+}
+
 // The grids of the generator's model turned by general_rotation() about the origin.
 std::vector<dg::GridRule> turned_grids(const std::string& name, const nlohmann::json& params) {
   dg::Model turned;
@@ -156,20 +183,15 @@ dg::TriangleMesh lockers(int count) {
 TEST_CASE("a row of touching lockers: one unit per locker, one of them split between the ends", "[grammar][grid]") {
   // Planes may not cut where the lockers meet (faces lie there), so they cut through the lockers;
   // the part before the first plane and the part after the last make one locker together.
-  dg::Model model;
-  model.mesh = lockers(5);
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = grids_of(prepared);
-  REQUIRE(grids.size() == 1);
-  const dg::GridDirection* row = direction_along(grids[0], Vec3(0.6, 0, 0));
+  const OneGrid one = one_grid(lockers(5));
+  const dg::GridDirection* row = direction_along(one.grid, Vec3(0.6, 0, 0));
   REQUIRE(row != nullptr);
   CHECK(row->count == 5);
   CHECK(row->head_units == 1);
   CHECK(row->split_unit);
-  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
   for (int n : {1, 3, 5, 8}) {
     INFO(n << " lockers");
-    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {n}, prepared.surface.eps());
+    const dg::TriangleMesh resized = resized_along(one, 0, n);
     CHECK(narrow_components(resized) == static_cast<std::size_t>(n));  // one handle per locker
     CHECK(resized.bounds().size().x() == Approx(0.6 * n).margin(1e-9));
   }
@@ -243,31 +265,22 @@ dg::TriangleMesh bookshelf(int books) {
 TEST_CASE("a bookshelf counts every book, the first and last against its sides", "[grammar][grid]") {
   // The sides begin where the first book's and the last book's units end (planes may not lie
   // there: they hold the sides' faces), so those units are compared without the sides' faces.
-  dg::Model model;
-  model.mesh = bookshelf(10);
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = grids_of(prepared);
-  REQUIRE(grids.size() == 1);
-  const dg::GridDirection* row = direction_along(grids[0], Vec3(0.2, 0, 0));
-  const dg::GridDirection* rows = direction_along(grids[0], Vec3(0, 0, 0.58));
+  const OneGrid one = one_grid(bookshelf(10));
+  const dg::GridDirection* row = direction_along(one.grid, Vec3(0.2, 0, 0));
+  const dg::GridDirection* rows = direction_along(one.grid, Vec3(0, 0, 0.58));
   REQUIRE(row != nullptr);
   REQUIRE(rows != nullptr);
   CHECK(row->count == 10);
   CHECK(rows->count == 3);
-  const std::size_t along = static_cast<std::size_t>(row - grids[0].directions.data());
-  std::vector<int> counts = dg::exemplar_counts(grids[0]);
-  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
-  for (int n : {dg::lowest_count(grids[0], along), 5, 10, 13}) {
+  const std::size_t along = static_cast<std::size_t>(row - one.grid.directions.data());
+  for (int n : {dg::lowest_count(one.grid, along), 5, 10, 13}) {
     INFO(n << " books a row");
-    counts[along] = n;
-    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
+    const dg::TriangleMesh resized = resized_along(one, along, n);
     CHECK(components_measuring(resized, Vec3(0.15, 0.22, 0.28)) == static_cast<std::size_t>(3 * n));  // books
     CHECK(resized.bounds().size().x() == Approx(0.2 * n + 0.08).margin(1e-9));
   }
   // Resized to its own counts, the bookshelf is the exemplar.
-  counts[along] = 10;
-  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
-  CHECK(dg::test::hausdorff_distance(same, bookshelf(10)) < 1e-3 * prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized_along(one, along, 10), bookshelf(10)) < 1e-3 * one.prepared.surface.eps());
 }
 
 namespace {
@@ -297,49 +310,37 @@ dg::TriangleMesh colonnade(int columns) {
 TEST_CASE("a colonnade counts its end columns, whose slabs hold the ends of its beam and steps", "[grammar][grid]") {
   // Planes fit 7 units; the eighth column stands in a slab with the beam's and steps' ends. Its
   // parts (base, shaft, capital) are copies of the unit's own parts, so it counts, kept once.
-  dg::Model model;
-  model.mesh = colonnade(8);
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = grids_of(prepared);
-  REQUIRE(grids.size() == 1);
-  REQUIRE(grids[0].directions.size() == 1);
-  const dg::GridDirection& row = grids[0].directions[0];
+  const OneGrid one = one_grid(colonnade(8));
+  REQUIRE(one.grid.directions.size() == 1);
+  const dg::GridDirection& row = one.grid.directions[0];
   CHECK(std::abs(row.direction.x()) == Approx(1.0));
   CHECK(row.count == 8);
-  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
-  for (int n : {dg::lowest_count(grids[0], 0), 4, 8, 11}) {
+  for (int n : {dg::lowest_count(one.grid, 0), 4, 8, 11}) {
     INFO(n << " columns");
-    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {n}, prepared.surface.eps());
+    const dg::TriangleMesh resized = resized_along(one, 0, n);
     CHECK(components_measuring(resized, Vec3(0.5, 0.5, 3.0)) == static_cast<std::size_t>(n));  // shafts
     CHECK(resized.bounds().size().x() == Approx(2.0 * n + 0.6).margin(1e-9));
   }
-  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {8}, prepared.surface.eps());
-  CHECK(dg::test::hausdorff_distance(same, colonnade(8)) < 1e-3 * prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized_along(one, 0, 8), colonnade(8)) < 1e-3 * one.prepared.surface.eps());
 }
 
 TEST_CASE("a chain of rings turned a quarter turn each gives a 1-grid of its links along the screw", "[grammar][grid]") {
   // Two links on is a translation too (a half turn of the screw and each ring's own half turn),
   // but its units would hold two links: the screw's, one link each, are the grid.
-  dg::Model model;
-  model.mesh = dg::test::make_chain(9);
-  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
-  const std::vector<dg::GridRule> grids = grids_of(prepared);
-  REQUIRE(grids.size() == 1);
-  REQUIRE(grids[0].directions.size() == 1);
-  const dg::GridDirection& links = grids[0].directions[0];
+  const OneGrid one = one_grid(dg::test::make_chain(9));
+  REQUIRE(one.grid.directions.size() == 1);
+  const dg::GridDirection& links = one.grid.directions[0];
   const dg::ScrewParameters screw = dg::screw_parameters(links.motion);
   CHECK(screw.angle * 180.0 / std::numbers::pi == Approx(90.0).margin(1e-3));
   CHECK(std::abs(screw.slide) == Approx(1.5).margin(1e-6));
   CHECK(links.count == 9);
-  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
-  for (int n : {dg::lowest_count(grids[0], 0), 4, 9, 13}) {
+  for (int n : {dg::lowest_count(one.grid, 0), 4, 9, 13}) {
     INFO(n << " links");
-    const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, {n}, prepared.surface.eps());
+    const dg::TriangleMesh resized = resized_along(one, 0, n);
     CHECK(component_boxes(resized).size() == static_cast<std::size_t>(n));  // one ring each
     CHECK(resized.bounds().size().x() == Approx(1.5 * (n - 1) + 2.3).margin(1e-9));
   }
-  const dg::TriangleMesh same = dg::resize_grid(grids[0], pieces, {9}, prepared.surface.eps());
-  CHECK(dg::test::hausdorff_distance(same, dg::test::make_chain(9)) < 1e-3 * prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized_along(one, 0, 9), dg::test::make_chain(9)) < 1e-3 * one.prepared.surface.eps());
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
