@@ -30,9 +30,14 @@ SiteLoops site_loops(const VoxelSurface& surface, const std::vector<std::uint32_
   std::vector<char> mask = mask_of(docker, surface.cell_count());
   const std::vector<std::int32_t> part = label_components(surface, mask, count);
   out.docker_parts.resize(count);
-  for (char& flag : mask) flag = !flag;  // now the cells outside the docker
-  const std::vector<std::int32_t> rest = label_components(surface, mask, count);
-  for (std::uint32_t cell : out.representative) out.rest_part.push_back(static_cast<std::uint32_t>(rest[cell]));
+  // Labelling the rest walks nearly the whole surface; a single loop has no other to join.
+  if (out.representative.size() > 1) {
+    for (char& flag : mask) flag = !flag;  // now the cells outside the docker
+    const std::vector<std::int32_t> rest = label_components(surface, mask, count);
+    for (std::uint32_t cell : out.representative) out.rest_part.push_back(static_cast<std::uint32_t>(rest[cell]));
+  } else {
+    out.rest_part.assign(out.representative.size(), 0);
+  }
   for (std::size_t i = 0; i < site.size(); ++i)
     for (std::uint32_t n : surface.neighbours(site[i]))
       if (part[n] >= 0) out.docker_parts[static_cast<std::size_t>(part[n])].push_back(static_cast<std::uint32_t>(out.loop_of[i]));
