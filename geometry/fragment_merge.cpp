@@ -273,8 +273,12 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
       continue;
     }
     const std::uint32_t a = users.front() / 3, b = users.back() / 3;
+    // Two faces back to back (a part resting on another, or a face held twice facing both ways;
+    // their cuts' vertices shared) where both end: an open border of each, which may turn there.
+    const bool back_to_back =
+        count == 2 && origin[a] != origin[b] && mesh.area_vector(a).normalized().dot(mesh.area_vector(b).normalized()) < -kParallel;
     const auto lo = static_cast<std::uint32_t>(uses[i].first >> 32), hi = static_cast<std::uint32_t>(uses[i].first & 0xffffffffu);
-    if (count == 1 && straighten_open_borders) {
+    if ((count == 1 || back_to_back) && straighten_open_borders) {
       for (const auto& [v, w] : {std::pair{lo, hi}, std::pair{hi, lo}})
         if (open_count[v] < 2) open_ends[v][open_count[v]++] = w;
         else kept[v] = 1;
@@ -283,7 +287,7 @@ MergedFragments merge_fragments(const TriangleMesh& mesh, const std::vector<std:
         if (border_count[v] < 2) border_ends[v][border_count[v]] = w;
         if (border_count[v] < 3) ++border_count[v];
       }
-    } else if (count != 2 || !same_label(a, b)) {
+    } else if (count != 2 || !same_label(a, b) || back_to_back) {
       kept[lo] = kept[hi] = 1;
     } else if (straighten_open_borders && origin[a] != origin[b]) {
       between_origins[lo] = between_origins[hi] = 1;

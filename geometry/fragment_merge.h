@@ -41,7 +41,8 @@ struct FragmentMergeOptions {
 /// used by exactly two triangles, or by two of each of the input triangles using them: a face
 /// the mesh holds twice, cut alike); a material border counts as a label border. Vertices
 /// flagged in `pinned` (one flag per vertex, e.g. the input triangles' corners) are always
-/// kept; others only where an edge between different labels, or an edge used otherwise, ends;
+/// kept; others only where an edge between different labels, or an edge used otherwise, ends
+/// (an edge of two input triangles back to back, e.g. a part resting on another, is open in both);
 /// `options` lets some of those go too. Regions made of the same triangles (the copies of a
 /// face held twice) are re-triangulated alike, each keeping its own facing.
 /// A region keeps its fragments when its re-triangulation does not reproduce its area (within

@@ -184,3 +184,40 @@ TEST_CASE("fragment merge: a square drawn twice along other diagonals merges in 
   CHECK(merged.mesh.area() == Approx(2.0).epsilon(1e-12));
   CHECK(merged.mesh.triangles.size() == 4);  // each layer its two triangles again
 }
+
+TEST_CASE("fragment merge: a piece of two faces back to back keeps the corners of its outline", "[geometry][fragment_merge]") {
+  // A part resting on another, both cut: a piece holds the square [1, 2]^2 of each, facing up
+  // (fragments fanned about (1.5, 1.5), of one input triangle) and facing down (fanned about
+  // (1.4, 1.6), of another), sharing the outline's corners and edge midpoints. Each outline edge
+  // is used once by each facing (as an edge between two input triangles would be), but it is
+  // where each face ends, and the outline turns at the square's corners.
+  dg::TriangleMesh piece;
+  piece.positions = {Vec3(1, 1, 0), Vec3(1.5, 1, 0), Vec3(2, 1, 0),   Vec3(2, 1.5, 0),  Vec3(2, 2, 0),
+                     Vec3(1.5, 2, 0), Vec3(1, 2, 0), Vec3(1, 1.5, 0), Vec3(1.5, 1.5, 0), Vec3(1.4, 1.6, 0)};
+  std::vector<std::uint32_t> origin;
+  for (std::uint32_t i = 0; i < 8; ++i) {
+    piece.triangles.push_back({i, (i + 1) % 8, 8}), origin.push_back(0);
+    piece.triangles.push_back({(i + 1) % 8, i, 9}), origin.push_back(1);
+  }
+  const std::vector<std::uint32_t> label(origin.size(), 0);
+  const std::vector<char> pinned(piece.positions.size(), 0);
+  for (const bool straightened : {false, true}) {
+    const dg::MergedFragments merged = dg::merge_fragments(piece, origin, label, pinned, {.straighten_open_borders = straightened});
+    // Each face re-triangulated from its outline alone: the 8 vertices, or its 4 corners when
+    // open borders are straightened.
+    CHECK(merged.mesh.triangles.size() == (straightened ? 4u : 12u));
+    dg::TriangleMesh up, down;  // the two faces apart
+    up.positions = down.positions = merged.mesh.positions;
+    for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+      for (std::uint32_t v : merged.mesh.triangles[t]) CHECK(v < 8);
+      CHECK((merged.mesh.area_vector(t).z() > 0.0) == (origin[merged.representative[t]] == 0));  // facing kept
+      (origin[merged.representative[t]] == 0 ? up : down).triangles.push_back(merged.mesh.triangles[t]);
+    }
+    for (const dg::TriangleMesh* face : {&up, &down}) {
+      CHECK(face->area() == Approx(1.0).epsilon(1e-12));
+      const dg::EdgeStatistics edges = dg::edge_statistics(*face);
+      CHECK(edges.non_manifold_edges == 0);
+      CHECK(edges.boundary_edges == (straightened ? 4u : 8u));  // the outline, conforming with the other face's
+    }
+  }
+}
