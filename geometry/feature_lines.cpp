@@ -124,23 +124,29 @@ void sample_line(const TriangleMesh& mesh, std::uint32_t line_index, const Featu
     const double length = (b - a).norm();
     if (length <= 0.0) continue;
     const double t = std::clamp((s - segment_start) / length, 0.0, 1.0);
-    FeatureSample sample;
-    sample.position = a + t * (b - a);
-    sample.tangent = (b - a) / length;
-    Vec3 normal = line.normals[segment] - line.normals[segment].dot(sample.tangent) * sample.tangent;
-    if (normal.norm() < 1e-9) normal = sample.tangent.unitOrthogonal();
-    sample.normal = normal.normalized();
-    sample.binormal = sample.tangent.cross(sample.normal);
-    sample.line = line_index;
-    sample.descriptor.dihedral_degrees = line.dihedrals[segment];
-    sample.descriptor.kind = line.kind;
     const std::size_t nearest = t < 0.5 ? segment : (segment + 1) % points.size();
-    sample.descriptor.curvature = vertex_curvature(points, line.closed, nearest);
-    samples.push_back(sample);
+    samples.push_back(sample_on_edge(line, line_index, segment, a + t * (b - a), (b - a) / length,
+                                     vertex_curvature(points, line.closed, nearest)));
   }
 }
 
 }  // namespace
+
+FeatureSample sample_on_edge(const FeatureLine& line, std::uint32_t line_index, std::size_t edge, const Vec3& position,
+                             const Vec3& tangent, double curvature) {
+  FeatureSample sample;
+  sample.position = position;
+  sample.tangent = tangent;
+  Vec3 normal = line.normals[edge] - line.normals[edge].dot(tangent) * tangent;
+  if (normal.norm() < 1e-9) normal = tangent.unitOrthogonal();
+  sample.normal = normal.normalized();
+  sample.binormal = tangent.cross(sample.normal);
+  sample.line = line_index;
+  sample.descriptor.dihedral_degrees = line.dihedrals[edge];
+  sample.descriptor.kind = line.kind;
+  sample.descriptor.curvature = curvature;
+  return sample;
+}
 
 double vertex_curvature(const std::vector<Vec3>& points, bool closed, std::size_t k) {
   const std::size_t n = points.size();

@@ -51,6 +51,12 @@ struct FeatureLines {
 /// 0 at the ends of an open one; a closed one turns at every vertex).
 double vertex_curvature(const std::vector<Vec3>& points, bool closed, std::size_t k);
 
+/// The sample of `line` (index `line_index`) at `position` on its edge `edge` (from vertex edge
+/// to vertex edge + 1, wrapping on a loop), travelled along the unit `tangent` (either way along
+/// the edge): normal, binormal and descriptor from that edge, the given `curvature`.
+FeatureSample sample_on_edge(const FeatureLine& line, std::uint32_t line_index, std::size_t edge, const Vec3& position,
+                             const Vec3& tangent, double curvature);
+
 /// Chains `features` (from find_feature_edges on the same welded mesh) into lines, split at
 /// junctions, at corners turning by more than `corner_angle_degrees`, and where edges of different
 /// classes meet (boundary, material border, crease); resamples each line at a spacing of about `spacing` model units (open lines get

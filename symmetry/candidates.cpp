@@ -251,7 +251,8 @@ std::vector<Keypoint> feature_keypoints(const FeatureLines& lines) {
 
 std::vector<Keypoint> loop_keypoints(const FeatureLines& lines, const TriangleMesh& mesh) {
   std::vector<Keypoint> keypoints;
-  for (const FeatureLine& line : lines.lines) {
+  for (std::uint32_t l = 0; l < lines.lines.size(); ++l) {
+    const FeatureLine& line = lines.lines[l];
     if (!line.closed) continue;
     const std::size_t n = line.vertices.size();
     if (n < 3 || line.normals.size() < n) continue;
@@ -262,17 +263,9 @@ std::vector<Keypoint> loop_keypoints(const FeatureLines& lines, const TriangleMe
       for (const auto& [edge, forward] : {std::pair{k, true}, std::pair{(k + n - 1) % n, false}}) {
         const Vec3 along = points[(edge + 1) % n] - points[edge];
         if (along.norm() <= 0.0) continue;
-        Keypoint key;
-        key.position = points[k];
-        key.tangent = (forward ? along : Vec3(-along)).normalized();
-        Vec3 normal = line.normals[edge] - line.normals[edge].dot(key.tangent) * key.tangent;
-        if (normal.norm() < 1e-9) normal = key.tangent.unitOrthogonal();
-        key.normal = normal.normalized();
-        key.binormal = key.tangent.cross(key.normal);
-        key.descriptor.dihedral_degrees = line.dihedrals[edge];
-        key.descriptor.kind = line.kind;
-        key.descriptor.curvature = vertex_curvature(points, true, k);
-        keypoints.push_back(key);
+        const FeatureSample s = sample_on_edge(line, l, edge, points[k], (forward ? along : Vec3(-along)).normalized(),
+                                               vertex_curvature(points, true, k));
+        keypoints.push_back({s.position, s.tangent, s.normal, s.binormal, s.descriptor});
       }
     }
   }
