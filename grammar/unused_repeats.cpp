@@ -21,6 +21,18 @@ bool in_a_grid(const Vec3& t, const std::vector<GridRule>& grids) {
   return false;
 }
 
+// Repeats of translation `t` that the directions of `grids` along it span: each pure
+// translation parallel to t (within 1 degree) spans its count times its pitch over |t|.
+double spanned_repeats(const Vec3& t, const std::vector<GridRule>& grids) {
+  double spanned = 0.0;
+  for (const GridRule& grid : grids)
+    for (const GridDirection& d : grid.directions) {
+      const bool parallel = d.translation.cross(t).norm() <= std::sin(std::numbers::pi / 180.0) * d.pitch * t.norm();
+      if (d.motion.rotation.isIdentity(1e-9) && d.pitch > 0.0 && parallel) spanned += static_cast<double>(d.count) * d.pitch / t.norm();
+    }
+  return spanned;
+}
+
 }  // namespace
 
 UnusedRepeats unused_repeats(const SymmetryResult& symmetries, const std::vector<GridRule>& grids, int min_repeats) {
@@ -30,7 +42,13 @@ UnusedRepeats unused_repeats(const SymmetryResult& symmetries, const std::vector
     if (static_cast<int>(family.count) < min_repeats) continue;
     const bool full_turn = family.order > 0 && static_cast<int>(family.count) >= family.order - 1;
     if (family.kind == "rotation" && !full_turn) unused.partial_turns.push_back(f);
-    if (family.kind == "translation" && !in_a_grid(family.generator.translation, grids)) unused.translations.push_back(f);
+    if (family.kind != "translation") continue;
+    const Vec3& t = family.generator.translation;
+    if (!in_a_grid(t, grids)) {
+      unused.translations.push_back(f);
+    } else if (const double spanned = spanned_repeats(t, grids); spanned > 0.0 && 2.0 * spanned < static_cast<double>(family.count)) {
+      unused.short_runs.push_back({f, spanned});
+    }
   }
   return unused;
 }

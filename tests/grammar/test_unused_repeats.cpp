@@ -70,3 +70,34 @@ TEST_CASE("unused repeats: translations outside every grid's span, rotations sho
     CHECK(unused.partial_turns == std::vector<std::size_t>{6, 7});
   }
 }
+
+TEST_CASE("unused repeats: a translation whose grids span less than half of its repeats", "[grammar][grid]") {
+  // 27 repeats of a fin's pitch (2 along x); wall brackets across the fins leave a grid only
+  // where there are none.
+  dg::SymmetryResult symmetries;
+  symmetries.families = {translation(Vec3(2, 0, 0), 27), translation(Vec3(0, 3, 0), 4)};
+  auto counted = [](dg::GridRule grid, std::vector<int> counts) {
+    for (std::size_t i = 0; i < counts.size(); ++i) grid.directions[i].count = counts[i];
+    return grid;
+  };
+  SECTION("two units of twice the pitch: 4 of 27 repeats") {
+    const dg::UnusedRepeats unused = dg::unused_repeats(symmetries, {counted(grid_along({Vec3(4, 0, 0), Vec3(0, 3, 0)}), {2, 4})}, 2);
+    REQUIRE(unused.short_runs.size() == 1);
+    CHECK(unused.short_runs[0].family == 0);
+    CHECK(unused.short_runs[0].spanned == Approx(4.0));
+    CHECK(unused.translations.empty());
+  }
+  SECTION("two stretches, one either way along the fins: 6 + 8 of 27 repeats") {
+    const dg::UnusedRepeats unused =
+        dg::unused_repeats(symmetries, {counted(grid_along({Vec3(2, 0, 0)}), {6}), counted(grid_along({Vec3(-4, 0, 0)}), {4})}, 2);
+    CHECK(unused.short_runs.empty());
+    CHECK(unused.translations == std::vector<std::size_t>{1});
+  }
+  SECTION("a screw whose slide runs along the fins spans none of them") {
+    dg::GridRule screw = counted(grid_along({Vec3(2, 0, 0)}), {20});
+    screw.directions[0].motion.rotation = Eigen::AngleAxisd(0.5, Vec3::UnitX()).toRotationMatrix();
+    const dg::UnusedRepeats unused = dg::unused_repeats(symmetries, {counted(grid_along({Vec3(4, 0, 0)}), {2}), screw}, 2);
+    REQUIRE(unused.short_runs.size() == 1);
+    CHECK(unused.short_runs[0].spanned == Approx(4.0));
+  }
+}

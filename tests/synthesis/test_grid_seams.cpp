@@ -7,6 +7,7 @@
 #include "geometry/topology.h"
 #include "grammar/grammar_file.h"
 #include "grammar/grid_cut.h"
+#include "grammar/unused_repeats.h"
 #include "support/cli_run.h"
 #include "support/corpus.h"
 #include "synthesis/grid_resize.h"
@@ -148,7 +149,8 @@ TEST_CASE("corpus: the Quaternius bank's colonnade hint suggests half an eps, wh
   CHECK(grids[0].directions[0].count >= 3);
 }
 
-TEST_CASE("corpus: no tolerance hint for the Blendswap radiator whose fins differ in shape", "[synthesis][grid][corpus]") {
+TEST_CASE("corpus: no tolerance hint for the Blendswap radiator whose fins differ in shape and its short grid named",
+          "[synthesis][grid][corpus]") {
   const std::optional<std::filesystem::path> radiator = dg::test::corpus_file_if_present("meshes/furn-blendswap-radiator1/radiator1.obj");
   if (!radiator) return;
   const dg::PreparedModel prepared = dg::prepare_model(*radiator);
@@ -158,6 +160,16 @@ TEST_CASE("corpus: no tolerance hint for the Blendswap radiator whose fins diffe
   // Its fin translation repeats 27 times over a grid of 2 units, but the fins' bevels differ in
   // angle, not position: a wider position tolerance adds under 1 % of the surface.
   CHECK_FALSE(dg::tolerance_hint(prepared, symmetries, grids).has_value());
+  // Wall brackets joined to the panel cross the fins, so the grid (2 units of two fins) spans 4 of
+  // the 27 repeats: the report names the fin translation as used for only part of them.
+  std::vector<dg::GridRule> rules;
+  for (const dg::GridWithPieces& g : grids) rules.push_back(g.rule);
+  const dg::UnusedRepeats unused = dg::unused_repeats(symmetries, rules, dg::GridOptions{}.min_repeats);
+  REQUIRE(unused.short_runs.size() == 1);
+  const dg::SymmetryFamily& fins = symmetries.families[unused.short_runs[0].family];
+  CHECK(fins.count == 27);
+  CHECK(fins.generator.translation.norm() == Approx(6.7).epsilon(0.01));
+  CHECK(unused.short_runs[0].spanned == Approx(4.0).epsilon(0.01));
 }
 
 TEST_CASE("analyze --tolerance: the summary and report give the tolerance and the grammar keeps the grid's seam misfit",

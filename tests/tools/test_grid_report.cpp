@@ -88,3 +88,30 @@ TEST_CASE("analyze: a further run of a grid's motion says so, with where both ru
   CHECK(grids[0]["further_run_of"].is_null());
   CHECK(grids[1]["further_run_of"] == nlohmann::json({{"grid", "grid1"}, {"direction", 1}}));
 }
+
+TEST_CASE("analyze: a grid over a short stretch of a translation's repeats is named as not built for the rest",
+          "[tools][grids]") {
+  // 16 posts 2 apart above one bar, whose top rises as a ramp under the first 10 (x = 3 .. 20):
+  // the posts' translation repeats 15 times, but only the slabs beyond the ramp repeat.
+  const std::vector<std::pair<double, double>> profile{{-1, -1}, {32, -1}, {32, 0}, {20, 0}, {20, 1}, {3, 0}, {-1, 0}};  // x, z
+  dg::TriangleMesh mesh;
+  for (const double y : {-0.5, 1.0})
+    for (const auto& [x, z] : profile) mesh.positions.emplace_back(x, y, z);
+  const auto n = static_cast<std::uint32_t>(profile.size());
+  for (const dg::Triangle& t : std::vector<dg::Triangle>{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {0, 5, 6}, {5, 3, 4}}) {
+    mesh.triangles.push_back({t[0], t[2], t[1]});              // the end facing -y
+    mesh.triangles.push_back({n + t[0], n + t[1], n + t[2]});  // the end facing +y
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    mesh.triangles.push_back({i, j, n + j});
+    mesh.triangles.push_back({i, n + j, n + i});
+  }
+  for (int i = 0; i < 16; ++i) dg::test::append(mesh, dg::test::make_box(dg::Vec3(2.0 * i, 0.0, 1.2), dg::Vec3(2.0 * i + 0.5, 0.5, 4.0)));
+  const std::string report = analyze_report(mesh, "ramp");
+  INFO(report);
+  CHECK(report.find("### grid1 (1-grid, counts 4)") != std::string::npos);
+  const std::size_t named = report.find("(15 repeats of |t| = 2): the grids along it span only 4 of its repeats");
+  REQUIRE(named != std::string::npos);
+  CHECK(report.find("## Not yet built") < named);
+}

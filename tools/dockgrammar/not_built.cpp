@@ -61,6 +61,11 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
                                 "the units lies across them, or the slabs are an extrusion that only slides along itself)",
                                 families_text(report.symmetries, unused.translations, "translation"),
                                 unused.translations.size() == 1 ? "s" : ""));
+  for (const ShortRun& run : unused.short_runs)
+    items.push_back(fmt::format("translation {}: the grids along it span only {:.3g} of its repeats; elsewhere along it, "
+                                "planes at its pitch cut no slabs that repeat the unit (connected geometry that does not "
+                                "repeat with the units lies across them, such as a radiator's wall brackets across its fins)",
+                                family_text(report.symmetries, run.family), run.spanned));
   const ContextFreeStats& stats = report.context_free;
   const bool one = stats.sites_without_fit == 1;
   if (stats.sites_without_fit > 0 && report.prepared.model.is_point_cloud())

@@ -12,7 +12,8 @@ namespace dg::cli {
 /// One sentence per limit of analyze that this model meets (empty when it meets none): rotation
 /// families that repeat short of a full turn (grids of pure rotations are not built),
 /// translation families that repeat but gave no grid (other than the one a tolerance hint
-/// names), docking sites dropped for a docker that does not fit the other location's seam.
+/// names) or whose grids span less than half of their repeats, docking sites dropped for a
+/// docker that does not fit the other location's seam.
 std::vector<std::string> not_built_items(const AnalysisReport& report);
 
 /// The translation families that repeat but gave no grid, as not_built_items names them
