@@ -41,4 +41,11 @@ std::optional<Vec3> SegmentIndex::nearest(const Vec3& p) const {
   return best;
 }
 
+bool SegmentIndex::any_within(const Vec3& p, double radius) const {
+  const auto found = grid_.find(cell_key(p, cell_));
+  if (found == grid_.end()) return false;
+  return std::any_of(found->second.begin(), found->second.end(),
+                     [&](std::uint32_t i) { return (closest_point_on_segment(p, segments_[i]) - p).norm() <= radius; });
+}
+
 }  // namespace dg

@@ -32,6 +32,10 @@ class SegmentIndex {
   /// none is: then none lies within `reach`).
   std::optional<Vec3> nearest(const Vec3& p) const;
 
+  /// Whether a segment hashed at p's cell passes within `radius` of p (the same distances as
+  /// nearest; stops at the first such segment).
+  bool any_within(const Vec3& p, double radius) const;
+
  private:
   const std::vector<Segment>& segments_;
   double cell_;
