@@ -28,7 +28,7 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments, double reach, d
   }
 }
 
-std::optional<Vec3> SegmentIndex::nearest(const Vec3& p) const {
+std::optional<Vec3> SegmentIndex::nearest(const Vec3& p, double enough) const {
   const auto found = grid_.find(cell_key(p, cell_));
   if (found == grid_.end()) return std::nullopt;
   std::optional<Vec3> best;
@@ -37,15 +37,9 @@ std::optional<Vec3> SegmentIndex::nearest(const Vec3& p) const {
     const Vec3 q = closest_point_on_segment(p, segments_[i]);
     const double distance = (q - p).norm();
     if (distance < best_distance) best_distance = distance, best = q;
+    if (best_distance <= enough) break;
   }
   return best;
-}
-
-bool SegmentIndex::any_within(const Vec3& p, double radius) const {
-  const auto found = grid_.find(cell_key(p, cell_));
-  if (found == grid_.end()) return false;
-  return std::any_of(found->second.begin(), found->second.end(),
-                     [&](std::uint32_t i) { return (closest_point_on_segment(p, segments_[i]) - p).norm() <= radius; });
 }
 
 }  // namespace dg

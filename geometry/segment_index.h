@@ -29,12 +29,9 @@ class SegmentIndex {
   SegmentIndex(std::vector<Segment>&&, double, double) = delete;
 
   /// The point of the curve nearest to p among the segments hashed at p's cell (nothing when
-  /// none is: then none lies within `reach`).
-  std::optional<Vec3> nearest(const Vec3& p) const;
-
-  /// Whether a segment hashed at p's cell passes within `radius` of p (the same distances as
-  /// nearest; stops at the first such segment).
-  bool any_within(const Vec3& p, double radius) const;
+  /// none is: then none lies within `reach`), or the first point found within `enough` of p
+  /// (for a caller that only needs to know the distance is at most that; at 0, still the nearest).
+  std::optional<Vec3> nearest(const Vec3& p, double enough = 0.0) const;
 
  private:
   const std::vector<Segment>& segments_;

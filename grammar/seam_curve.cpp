@@ -42,8 +42,8 @@ double farthest_sample(const std::vector<Segment>& a, const std::vector<Segment>
   const SegmentIndex index(b, limit, cell);
   double farthest = 0.0;
   for (const Vec3& p : samples(a)) {
-    if (farthest > 0.0 && index.any_within(p, farthest)) continue;  // cannot raise the largest distance
-    const std::optional<Vec3> q = index.nearest(p);
+    // A point within the largest distance so far is enough: the sample cannot raise it.
+    const std::optional<Vec3> q = index.nearest(p, farthest);
     const double distance = q ? (*q - p).norm() : std::numeric_limits<double>::infinity();
     if (distance > limit) return std::numeric_limits<double>::infinity();
     farthest = std::max(farthest, distance);

@@ -8,6 +8,9 @@
 namespace dg {
 namespace {
 
+// Sine of the angle (1 degree) within which a translation counts as lying along a grid's.
+const double kAlongSine = std::sin(std::numbers::pi / 180.0);
+
 // Whether translation `t` lies (within 1 degree) in the span of the direction translations of
 // some grid of `grids` (a 2-grid's diagonal steps included).
 bool in_a_grid(const Vec3& t, const std::vector<GridRule>& grids) {
@@ -16,7 +19,7 @@ bool in_a_grid(const Vec3& t, const std::vector<GridRule>& grids) {
     Eigen::MatrixXd span(3, static_cast<Eigen::Index>(grid.directions.size()));
     for (std::size_t i = 0; i < grid.directions.size(); ++i) span.col(static_cast<Eigen::Index>(i)) = grid.directions[i].translation;
     const Vec3 in_span = span * span.colPivHouseholderQr().solve(t);
-    if ((t - in_span).norm() <= std::sin(std::numbers::pi / 180.0) * t.norm()) return true;
+    if ((t - in_span).norm() <= kAlongSine * t.norm()) return true;
   }
   return false;
 }
@@ -27,7 +30,7 @@ double spanned_repeats(const Vec3& t, const std::vector<GridRule>& grids) {
   double spanned = 0.0;
   for (const GridRule& grid : grids)
     for (const GridDirection& d : grid.directions) {
-      const bool parallel = d.translation.cross(t).norm() <= std::sin(std::numbers::pi / 180.0) * d.pitch * t.norm();
+      const bool parallel = d.translation.cross(t).norm() <= kAlongSine * d.pitch * t.norm();
       if (d.motion.rotation.isIdentity(1e-9) && d.pitch > 0.0 && parallel) spanned += static_cast<double>(d.count) * d.pitch / t.norm();
     }
   return spanned;

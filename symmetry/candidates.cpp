@@ -214,6 +214,9 @@ void make_canonical(Candidate& c, double slide_tolerance) {
   c.transform = canonical;
 }
 
+// The keypoint at a feature-line sample: its position, frame and descriptor.
+Keypoint keypoint_of(const FeatureSample& s) { return {s.position, s.tangent, s.normal, s.binormal, s.descriptor}; }
+
 }  // namespace
 
 Candidate refine_candidate(const RigidTransform& transform, const std::vector<Keypoint>& keypoints,
@@ -233,7 +236,7 @@ std::vector<Keypoint> feature_keypoints(const FeatureLines& lines) {
     const bool first = i == 0 || samples[i - 1].line != s.line;
     const bool last = i + 1 == samples.size() || samples[i + 1].line != s.line;
     if (!first && !last) continue;
-    Keypoint k{s.position, s.tangent, s.normal, s.binormal, s.descriptor};
+    Keypoint k = keypoint_of(s);
     if (last && !first) {  // the tangent points into the line at both ends
       k.tangent = -k.tangent;
       k.binormal = -k.binormal;
@@ -263,9 +266,8 @@ std::vector<Keypoint> loop_keypoints(const FeatureLines& lines, const TriangleMe
       for (const auto& [edge, forward] : {std::pair{k, true}, std::pair{(k + n - 1) % n, false}}) {
         const Vec3 along = points[(edge + 1) % n] - points[edge];
         if (along.norm() <= 0.0) continue;
-        const FeatureSample s = sample_on_edge(line, l, edge, points[k], (forward ? along : Vec3(-along)).normalized(),
-                                               vertex_curvature(points, true, k));
-        keypoints.push_back({s.position, s.tangent, s.normal, s.binormal, s.descriptor});
+        keypoints.push_back(keypoint_of(sample_on_edge(line, l, edge, points[k], (forward ? along : Vec3(-along)).normalized(),
+                                                       vertex_curvature(points, true, k))));
       }
     }
   }
