@@ -206,9 +206,18 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   // the screw when that has more units: its units hold several of the screw's. It is a power of
   // the screw (a full turn of a spiral stair that climbs more than one), or one composed with a
   // turn that each unit survives (a chain whose links turn by a quarter turn each: two links on
-  // is a half turn of the screw and each link's own half turn).
+  // is a half turn of the screw and each link's own half turn). A translation that forms a grid
+  // with another of min_repeats units across it stays: the screw could join no such grid (a
+  // staggered brick wall's half turn about its length with a slide of half a brick has twice the
+  // units of the brick pitch, which with the pitch of two courses makes the wall's 2-grid).
+  const std::vector<GridDirection> found_translations = translations;
+  auto forms_a_grid = [&](const GridDirection& translation) {
+    return std::any_of(found_translations.begin(), found_translations.end(), [&](const GridDirection& other) {
+      return other.count >= options.min_repeats && independent_of(other.translation, {translation});
+    });
+  };
   std::erase_if(translations, [&](const GridDirection& translation) {
-    return std::any_of(screws.begin(), screws.end(), [&](const GridDirection& screw) {
+    return !forms_a_grid(translation) && std::any_of(screws.begin(), screws.end(), [&](const GridDirection& screw) {
       const int turn = static_cast<int>(std::lround(translation.pitch / screw.pitch));
       return screw.count > translation.count && turn >= 2 && !independent_of(translation.translation, {screw}) &&
              std::abs(translation.pitch - turn * screw.pitch) <= prepared.surface.eps();

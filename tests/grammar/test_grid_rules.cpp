@@ -343,6 +343,62 @@ TEST_CASE("a chain of rings turned a quarter turn each gives a 1-grid of its lin
   CHECK(dg::test::hausdorff_distance(resized_along(one, 0, 9), dg::test::make_chain(9)) < 1e-3 * one.prepared.surface.eps());
 }
 
+namespace {
+
+// A wall of staggered bricks (0.2 x 0.065 x 0.1, 0.01 apart): `rows` courses of `bricks` along
+// x, every second course shifted by half a brick, with a half brick at each of its ends.
+dg::TriangleMesh brick_wall(int bricks, int rows) {
+  constexpr double length = 0.2, height = 0.065, depth = 0.1, gap = 0.01, pitch = length + gap;
+  dg::TriangleMesh mesh;
+  auto brick = [&](double x0, double x1, double y) {
+    dg::test::append(mesh, dg::test::make_box(Vec3(x0, y, 0.0), Vec3(x1, y + height, depth)));
+  };
+  for (int row = 0; row < rows; ++row) {
+    const double y = row * (height + gap);
+    if (row % 2 == 0) {
+      for (int b = 0; b < bricks; ++b) brick(b * pitch, b * pitch + length, y);
+      continue;
+    }
+    brick(0.0, 0.5 * pitch - gap, y);
+    for (int b = 0; b + 1 < bricks; ++b) brick((b + 0.5) * pitch, (b + 0.5) * pitch + length, y);
+    brick((bricks - 0.5) * pitch, bricks * pitch - gap, y);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a staggered brick wall: a 2-grid along the brick pitch and two courses, not the screw of half a brick",
+          "[grammar][grid]") {
+  // A half turn about the wall's length with a slide of half a brick maps the courses onto one
+  // another, so its screw has twice the units of the brick pitch; the pitch still makes the 2-grid
+  // with the courses, which the screw could not join.
+  dg::Model model;
+  model.mesh = brick_wall(8, 6);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const dg::SymmetryResult symmetries = dg::detect_symmetries(prepared);
+  const bool half_brick_screw = std::any_of(symmetries.symmetries.begin(), symmetries.symmetries.end(), [](const auto& s) {
+    const dg::ScrewParameters screw = dg::screw_parameters(s.transform);
+    return s.kind == "screw" && std::abs(std::abs(screw.slide) - 0.105) < 1e-3 && std::abs(screw.axis.x()) > 0.999;
+  });
+  REQUIRE(half_brick_screw);
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, symmetries);
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 2);
+  const dg::GridDirection* along = direction_along(grids[0], Vec3(0.21, 0, 0));
+  const dg::GridDirection* up = direction_along(grids[0], Vec3(0, 0.15, 0));
+  REQUIRE(along != nullptr);
+  REQUIRE(up != nullptr);
+  CHECK(along->count == 7);  // one more brick in each full course than units
+  CHECK(up->count == 3);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  std::vector<int> counts(2);
+  counts[along == &grids[0].directions[0] ? 0 : 1] = 10;
+  counts[up == &grids[0].directions[0] ? 0 : 1] = 5;
+  const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized, brick_wall(11, 10)) < 1e-3 * prepared.surface.eps());
+}
+
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
   const std::optional<std::filesystem::path> terrace =
       dg::test::corpus_file_if_present("meshes/arch-fg-terrace17/terrace17-1.obj");
