@@ -177,12 +177,32 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   // Families are independent: examined in parallel and joined in family order.
   const std::size_t family_count = symmetries.families.size();
   std::vector<std::optional<GridDirection>> found(family_count);
+  // A translation's grid spans a short run when its units cover fewer than half of the
+  // family's repeats (count x power).
+  auto short_run = [](const SymmetryFamily& family, const GridDirection& direction, int power) {
+    return family.kind == "translation" && 2 * direction.count * std::abs(power) < static_cast<int>(family.count);
+  };
   parallel_for_reporting(family_count, progress, "grid rules", [&](std::size_t f) {
     const SymmetryFamily& family = symmetries.families[f];
     if (family.kind != "translation" && family.kind != "screw") return;
-    for (std::size_t m : members_by_power(family)) {
+    const std::vector<std::size_t> members = members_by_power(family);
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const std::size_t m = members[i];
       found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], search);
-      if (found[f]) return;
+      if (!found[f]) continue;
+      // A short run (posts between the piers of a bridge) gives way to the first larger power
+      // whose units span the rest (the bridge's spans, each with its pier and posts).
+      if (short_run(family, *found[f], family.powers[m]))
+        for (std::size_t j = i + 1; j < members.size(); ++j) {
+          const std::size_t larger = members[j];
+          std::optional<GridDirection> longer =
+              grid_direction(prepared, symmetries.symmetries[family.members[larger]], family.members[larger], search);
+          if (longer && !short_run(family, *longer, family.powers[larger])) {
+            found[f] = std::move(longer);
+            break;
+          }
+        }
+      return;
     }
   });
   for (std::size_t f = 0; f < family_count; ++f) {

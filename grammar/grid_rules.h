@@ -90,8 +90,11 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
   return std::max(grid.min_count, min_units(grid.directions[i]));
 }
 
-/// Finds grids from the detected symmetry families. Independent translations are combined into
-/// one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
+/// Finds grids from the detected symmetry families. A family's generator gives its direction, or
+/// when it has none, the next power that does; a translation's direction whose units span fewer
+/// than half of the family's repeats gives way to the first larger power's that spans at least
+/// half (the spans of a bridge rather than the posts between two piers). Independent
+/// translations are combined into one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
 /// commute); directions that are sums of chosen ones are dropped. The direction with the most
 /// units needs GridOptions::min_repeats of them; the others may have one (see min_repeats). Each screw axis gives a
 /// further 1-grid. Rotations (no slide) give none. When no translation gives a direction, the

@@ -399,6 +399,42 @@ TEST_CASE("a staggered brick wall: a 2-grid along the brick pitch and two course
   CHECK(dg::test::hausdorff_distance(resized, brick_wall(11, 10)) < 1e-3 * prepared.surface.eps());
 }
 
+namespace {
+
+// A footbridge of `spans` spans 5 long along x: a deck, a pier under each joint (half a pier at
+// each end), a post every 1 and a handrail on the posts.
+dg::TriangleMesh footbridge(int spans) {
+  const double length = 5.0 * spans;
+  dg::TriangleMesh mesh;
+  auto box = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
+    dg::test::append(mesh, dg::test::make_box(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
+  };
+  box(0.0, 0.0, 2.0, length, 2.0, 2.3);
+  for (int k = 0; k <= spans; ++k) box(std::max(0.0, 5.0 * k - 0.3), 0.6, 0.0, std::min(length, 5.0 * k + 0.3), 1.4, 2.0);
+  for (int k = 0; k <= 5 * spans; ++k) {
+    const double x = std::clamp(k - 0.04, 0.0, length - 0.08);
+    box(x, 0.05, 2.3, x + 0.08, 0.13, 3.2);
+  }
+  box(0.0, 0.03, 3.2, length, 0.15, 3.3);
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a footbridge: a 1-grid of its spans, not of the posts between two piers", "[grammar][grid]") {
+  // The post pitch repeats 17 times, but planes at it fit only between two piers (4 units): its
+  // fifth power, one span with its pier, spans the rest.
+  const OneGrid one = one_grid(footbridge(4));
+  REQUIRE(one.grid.directions.size() == 1);
+  const dg::GridDirection* spans = direction_along(one.grid, Vec3(5, 0, 0));
+  REQUIRE(spans != nullptr);
+  CHECK(spans->count == 3);  // the inner piers, as a fence counts its inner posts
+  for (int n : {1, 3, 5}) {
+    INFO(n << " inner piers");
+    CHECK(dg::test::hausdorff_distance(resized_along(one, 0, n), footbridge(n + 1)) < 1e-3 * one.prepared.surface.eps());
+  }
+}
+
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
   const std::optional<std::filesystem::path> terrace =
       dg::test::corpus_file_if_present("meshes/arch-fg-terrace17/terrace17-1.obj");
