@@ -176,7 +176,10 @@ std::optional<MotionPlanes> motion_planes(const PreparedModel& prepared, const D
   const ScrewParameters screw = screw_parameters(symmetry.transform);
   const Vec3 t = symmetry.kind == "translation" ? symmetry.transform.translation : screw.slide * screw.axis;
   const double pitch = t.norm();
-  if (pitch <= 0.0 || !spans_pitches(prepared.cleaning.bounds, t, search.min_repeats)) return std::nullopt;
+  // Copies of the unit beyond the first and last plane count, so n units may span only a little
+  // more than n - 1 pitches (two layers of crates with a gap between them).
+  const int spanned_pitches = search.copy_tolerance > 0.0 ? search.min_repeats - 1 : search.min_repeats;
+  if (pitch <= 0.0 || !spans_pitches(prepared.cleaning.bounds, t, spanned_pitches)) return std::nullopt;
   MotionPlanes planes{.prepared = prepared, .search = search};
   planes.symmetry_index = symmetry_index;
   planes.points = prepared.model.is_point_cloud();

@@ -225,9 +225,9 @@ VerifyReport verify_models(Model exemplar, Model candidate, const VerifyOptions&
   const bool exemplar_closed = report.exemplar.closed && report.exemplar.oriented;
   report.checks.push_back({"closed", !exemplar_closed || (report.candidate.closed && report.candidate.oriented),
                            exemplar_closed ? "closed and oriented (the exemplar is)"
-                                           : "none (the exemplar is not closed and oriented)"});
+                                           : "nothing (the exemplar is not closed and oriented)"});
   report.checks.push_back({"self_intersections", exemplar_intersections.any || !candidate_intersections.any,
-                           exemplar_intersections.any ? "none (the exemplar self-intersects)"
+                           exemplar_intersections.any ? "nothing (the exemplar self-intersects)"
                                                       : "no intersecting triangle pairs (the exemplar has none)"});
   report.checks.push_back(r_similarity_check(report.similarity, options));
   report.pass = std::all_of(report.checks.begin(), report.checks.end(), [](const CheckResult& c) { return c.pass; });

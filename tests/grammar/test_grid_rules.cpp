@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -433,6 +434,51 @@ TEST_CASE("a footbridge: a 1-grid of its spans, not of the posts between two pie
     INFO(n << " inner piers");
     CHECK(dg::test::hausdorff_distance(resized_along(one, 0, n), footbridge(n + 1)) < 1e-3 * one.prepared.surface.eps());
   }
+}
+
+namespace {
+
+// A stack of crates 0.6 x 0.4 x 0.4 with a handle on the front, `across` along x (pitch 0.65),
+// `deep` along y (0.45) and `high` along z (0.42): gaps between them along every axis.
+dg::TriangleMesh crates(int across, int deep, int high) {
+  dg::TriangleMesh mesh;
+  for (int i = 0; i < across; ++i)
+    for (int j = 0; j < deep; ++j)
+      for (int k = 0; k < high; ++k) {
+        const Vec3 corner(0.65 * i, 0.45 * j, 0.42 * k);
+        dg::test::append(mesh, dg::test::make_box(corner, corner + Vec3(0.6, 0.4, 0.4)));
+        dg::test::append(mesh, dg::test::make_box(corner + Vec3(0.25, -0.02, 0.3), corner + Vec3(0.35, 0.0, 0.35)));
+      }
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a stack of 2 x 2 x 2 crates: a 3-grid of two units each way, though it spans less than two pitches",
+          "[grammar][grid]") {
+  // Each direction's second unit is a copy beyond the planes: the stack spans two pitches less
+  // one gap.
+  dg::Model model;
+  model.mesh = crates(2, 2, 2);
+  dg::PrepareOptions options;
+  options.r = 0.05;  // the default (1.6 % of 1.25) spends a minute on 400k cells
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model), options);
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  const dg::GridRule& grid = grids[0];
+  REQUIRE(grid.directions.size() == 3);
+  const std::array<Vec3, 3> pitches{Vec3(0.65, 0, 0), Vec3(0, 0.45, 0), Vec3(0, 0, 0.42)};
+  const std::array<int, 3> wanted{3, 4, 2};  // crates along x, y and z after the resize
+  std::vector<int> counts(3, 0);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const dg::GridDirection* direction = direction_along(grid, pitches[axis]);
+    REQUIRE(direction != nullptr);
+    CHECK(direction->count == 2);
+    counts[static_cast<std::size_t>(direction - grid.directions.data())] = wanted[axis];
+  }
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, prepared.surface.eps());
+  const dg::TriangleMesh resized = dg::resize_grid(grid, pieces, counts, prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized, crates(3, 4, 2)) < 1e-3 * prepared.surface.eps());
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
