@@ -311,6 +311,13 @@ GridDirection settled(const MotionPlanes& planes, double first, int count) {
   return direction;
 }
 
+// Whether the model's extent along the direction leaves room for more than `count` units: units
+// counted beyond the planes need not lie between them, so n units with gaps between them span
+// n - 1 pitches and a little more (three crates in a row, 0.05 apart at a pitch of 0.65).
+bool room_for_another_unit(const MotionPlanes& planes, int count) {
+  return count * planes.pitch + planes.half < planes.highest - planes.lowest;
+}
+
 // A candidate chain of planes.
 struct Chain {
   double first = 0.0;
@@ -485,7 +492,7 @@ std::optional<GridDirection> best_chain(const MotionPlanes& planes, const std::v
   GridDirection best = settled(planes, chains[0].first, longest);
   if (planes.search.copy_tolerance <= 0.0) return best;
   // Copies beyond the planes, or room for them: other phases may leave more units in all.
-  const bool beyond = best.count > longest, room = (best.count + 1) * planes.pitch <= planes.highest - planes.lowest;
+  const bool beyond = best.count > longest, room = room_for_another_unit(planes, best.count);
   // With room, one chain per stretch between vertex phases is counted: its planes cross the same
   // edges as any other chain's there.
   std::set<std::ptrdiff_t> stretches{phase_stretch(planes, chains[0].phase)};
@@ -557,7 +564,7 @@ std::optional<GridDirection> grid_direction(const PreparedModel& prepared, const
   }
   if (further) return best && apart_from_runs_before(*planes, *best) ? best : std::nullopt;
   // Room for another unit: copies side by side at another phase may reach further.
-  if (best && (best->count + 1) * planes->pitch <= planes->highest - planes->lowest)
+  if (best && room_for_another_unit(*planes, best->count))
     if (std::optional<GridDirection> copied = copied_chain(*planes, best->count)) best = std::move(copied);
   return best;
 }

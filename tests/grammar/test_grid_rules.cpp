@@ -390,14 +390,14 @@ TEST_CASE("a staggered brick wall: a 2-grid along the brick pitch and two course
   const dg::GridDirection* up = direction_along(grids[0], Vec3(0, 0.15, 0));
   REQUIRE(along != nullptr);
   REQUIRE(up != nullptr);
-  CHECK(along->count == 7);  // one more brick in each full course than units
+  CHECK(along->count == 8);  // the bricks of a full course
   CHECK(up->count == 3);
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
   std::vector<int> counts(2);
   counts[along == &grids[0].directions[0] ? 0 : 1] = 10;
   counts[up == &grids[0].directions[0] ? 0 : 1] = 5;
   const dg::TriangleMesh resized = dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps());
-  CHECK(dg::test::hausdorff_distance(resized, brick_wall(11, 10)) < 1e-3 * prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(resized, brick_wall(10, 10)) < 1e-3 * prepared.surface.eps());
 }
 
 namespace {
@@ -479,6 +479,27 @@ TEST_CASE("a stack of 2 x 2 x 2 crates: a 3-grid of two units each way, though i
   const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grid, prepared.surface.eps());
   const dg::TriangleMesh resized = dg::resize_grid(grid, pieces, counts, prepared.surface.eps());
   CHECK(dg::test::hausdorff_distance(resized, crates(3, 4, 2)) < 1e-3 * prepared.surface.eps());
+}
+
+TEST_CASE("a row of three crates counts three: the row spans less than three pitches, yet leaves room for a third",
+          "[grammar][grid]") {
+  // At r = 0.05 the first chain found has two units between planes and no copy beyond them; the
+  // row, 1.9 long at a pitch of 0.65, has room for a third unit at another phase.
+  dg::Model model;
+  model.mesh = crates(3, 1, 1);
+  dg::PrepareOptions options;
+  options.r = 0.05;
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model), options);
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  const dg::GridDirection* row = direction_along(grids[0], Vec3(0.65, 0, 0));
+  REQUIRE(row != nullptr);
+  CHECK(row->count == 3);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  std::vector<int> counts = dg::exemplar_counts(grids[0]);
+  counts[static_cast<std::size_t>(row - grids[0].directions.data())] = 5;
+  CHECK(dg::test::hausdorff_distance(dg::resize_grid(grids[0], pieces, counts, prepared.surface.eps()), crates(5, 1, 1)) <
+        1e-3 * prepared.surface.eps());
 }
 
 TEST_CASE("corpus: FlightGear's terrace of 17 houses gives a 1-grid of 17", "[grammar][grid][corpus]") {
