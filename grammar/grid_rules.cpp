@@ -42,6 +42,28 @@ std::vector<std::size_t> members_by_power(const SymmetryFamily& family) {
   return by_power;
 }
 
+// The direction of a translation or screw family: its generator's, or when that gives none the
+// next power's that does. A translation's direction whose units span a short run of the family's
+// repeats gives way to the first larger power's that does not (the spans of a bridge, each with
+// its pier and posts, rather than the posts between two piers).
+std::optional<GridDirection> family_direction(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                              const SymmetryFamily& family, const DirectionSearch& search) {
+  auto direction_of = [&](std::size_t m) {
+    return grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], search);
+  };
+  auto spans_short_run = [&](const GridDirection& direction, std::size_t m) {
+    return family.kind == "translation" && short_run(direction.count * std::abs(family.powers[m]), family.count);
+  };
+  const std::vector<std::size_t> members = members_by_power(family);
+  auto member = members.begin();
+  std::optional<GridDirection> found;
+  while (!found && member != members.end()) found = direction_of(*member++);
+  if (!found || !spans_short_run(*found, *std::prev(member))) return found;
+  for (; member != members.end(); ++member)
+    if (std::optional<GridDirection> longer = direction_of(*member); longer && !spans_short_run(*longer, *member)) return longer;
+  return found;
+}
+
 // Extent of a set of triangles along a direction and in space.
 struct Extent {
   BoundingBox box;
@@ -177,33 +199,9 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
   // Families are independent: examined in parallel and joined in family order.
   const std::size_t family_count = symmetries.families.size();
   std::vector<std::optional<GridDirection>> found(family_count);
-  // A translation's grid spans a short run when its units cover fewer than half of the
-  // family's repeats (count x power).
-  auto short_run = [](const SymmetryFamily& family, const GridDirection& direction, int power) {
-    return family.kind == "translation" && 2 * direction.count * std::abs(power) < static_cast<int>(family.count);
-  };
   parallel_for_reporting(family_count, progress, "grid rules", [&](std::size_t f) {
     const SymmetryFamily& family = symmetries.families[f];
-    if (family.kind != "translation" && family.kind != "screw") return;
-    const std::vector<std::size_t> members = members_by_power(family);
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      const std::size_t m = members[i];
-      found[f] = grid_direction(prepared, symmetries.symmetries[family.members[m]], family.members[m], search);
-      if (!found[f]) continue;
-      // A short run (posts between the piers of a bridge) gives way to the first larger power
-      // whose units span the rest (the bridge's spans, each with its pier and posts).
-      if (short_run(family, *found[f], family.powers[m]))
-        for (std::size_t j = i + 1; j < members.size(); ++j) {
-          const std::size_t larger = members[j];
-          std::optional<GridDirection> longer =
-              grid_direction(prepared, symmetries.symmetries[family.members[larger]], family.members[larger], search);
-          if (longer && !short_run(family, *longer, family.powers[larger])) {
-            found[f] = std::move(longer);
-            break;
-          }
-        }
-      return;
-    }
+    if (family.kind == "translation" || family.kind == "screw") found[f] = family_direction(prepared, symmetries, family, search);
   });
   for (std::size_t f = 0; f < family_count; ++f) {
     const SymmetryFamily& family = symmetries.families[f];

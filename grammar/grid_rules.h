@@ -90,12 +90,16 @@ inline int lowest_count(const GridRule& grid, std::size_t i) {
   return std::max(grid.min_count, min_units(grid.directions[i]));
 }
 
+/// Whether grids spanning `spanned` repeats of a translation family's generator cover fewer than
+/// half of its `repeats` (SymmetryFamily::count): a short run of it.
+inline bool short_run(double spanned, std::size_t repeats) { return 2.0 * spanned < static_cast<double>(repeats); }
+
 /// Finds grids from the detected symmetry families. A family's generator gives its direction, or
-/// when it has none, the next power that does; a translation's direction whose units span fewer
-/// than half of the family's repeats gives way to the first larger power's that spans at least
-/// half (the spans of a bridge rather than the posts between two piers). Independent
-/// translations are combined into one k-grid, "grid1" (their cut planes are each valid over the whole model, and translations
-/// commute); directions that are sums of chosen ones are dropped. The direction with the most
+/// when it has none, the next power that does; a translation's direction whose units span a
+/// short_run of the family's repeats gives way to the first larger power's that does not (the
+/// spans of a bridge rather than the posts between two piers). Independent translations are
+/// combined into one k-grid, "grid1" (their cut planes are each valid over the whole model, and
+/// translations commute); directions that are sums of chosen ones are dropped. The direction with the most
 /// units needs GridOptions::min_repeats of them; the others may have one (see min_repeats). Each screw axis gives a
 /// further 1-grid. Rotations (no slide) give none. When no translation gives a direction, the
 /// translation with the most units whose planes cut all but some separate parts kept whole

@@ -49,7 +49,7 @@ UnusedRepeats unused_repeats(const SymmetryResult& symmetries, const std::vector
     const Vec3& t = family.generator.translation;
     if (!in_a_grid(t, grids)) {
       unused.translations.push_back(f);
-    } else if (const double spanned = spanned_repeats(t, grids); spanned > 0.0 && 2.0 * spanned < static_cast<double>(family.count)) {
+    } else if (const double spanned = spanned_repeats(t, grids); spanned > 0.0 && short_run(spanned, family.count)) {
       unused.short_runs.push_back({f, spanned});
     }
   }
