@@ -11,6 +11,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 namespace fs = std::filesystem;
 
@@ -47,14 +49,27 @@ double aspect(const fs::path& png) {
 }  // namespace
 
 // The spiral stairs stand along +z (2 x 2 wide, 3.16 tall) and are thinnest along x and y
-// alike, so the guess (y up) lays them on their side; --up z stands them up.
+// alike, so --up y lays them on their side; --up z, or their screw's axis without --up, stands
+// them up.
 TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resize and symmetry pictures", "[tools][pictures]") {
   const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-test");
   const std::string model = std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/spiral_stairs_12.obj";
 
-  // Without --up: the guess, stairs lying down.
-  REQUIRE(dg::test::run_cli("symmetry " + model + " -q --top 1 -o " + (folder / "guess").string(), folder).status == 0);
-  CHECK_FALSE(taller_than_wide(folder / "guess" / "symmetry_01.png"));
+  // --up y: stairs lying down.
+  REQUIRE(dg::test::run_cli("symmetry " + model + " -q --top 1 --up y -o " + (folder / "lying").string(), folder).status == 0);
+  CHECK_FALSE(taller_than_wide(folder / "lying" / "symmetry_01.png"));
+  // Without --up: the axis of the screw of 30 degrees that maps 90 % of the surface onto itself.
+  REQUIRE(dg::test::run_cli("symmetry " + model + " -q --top 1 -o " + (folder / "turn").string(), folder).status == 0);
+  CHECK(taller_than_wide(folder / "turn" / "symmetry_01.png"));
+  const dg::test::AnalyzedModel guessed = dg::test::analyze_model("spiral_stairs_12", folder / "turn-analyze");
+  REQUIRE(guessed.run.status == 0);
+  {
+    std::ifstream in(guessed.grammar);
+    CHECK(nlohmann::json::parse(in).value("up", "") == "z");
+    std::ifstream report(folder / "turn-analyze" / "spiral_stairs_12.report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    CHECK(text.find("Up axis z: the axis of screw") != std::string::npos);
+  }
 
   // With --up z: upright, and the axis is stored for generate.
   const dg::test::AnalyzedModel upright = dg::test::analyze_model("spiral_stairs_12", folder / "z", "--up z");
@@ -102,7 +117,7 @@ TEST_CASE("up axis: --up z stands z-up stairs upright in analyze, generate, resi
 }
 
 // glTF defines +Y as up, so a .glb input is stored (and drawn) y-up even when its shape alone
-// suggests z (the fence is thinnest along y); the same mesh as OBJ keeps the shape's guess.
+// suggests z (the fence is thinnest along y); the same mesh as OBJ is read as z-up.
 TEST_CASE("up axis: glTF input is y-up by its specification, OBJ input is guessed", "[tools][pictures]") {
   const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-gltf-test");
   const dg::Model fence = dg::read_model(std::string(DOCKGRAMMAR_SOURCE_DIR) + "/assets/models/fence_4.obj");
@@ -114,7 +129,8 @@ TEST_CASE("up axis: glTF input is y-up by its specification, OBJ input is guesse
     return nlohmann::json::parse(in).value("up", "");
   };
   CHECK(stored_up("fence.glb") == "y");
-  CHECK(stored_up("fence.obj").empty());
+  // As OBJ, the axis its posts turn about by quarter turns (61 % of the surface).
+  CHECK(stored_up("fence.obj") == "z");
   fs::remove_all(folder);
 }
 

@@ -53,7 +53,7 @@ void add_analyze_command(CLI::App& app) {
   command->add_flag("--geometry-only", options->geometry_only,
                     "When geometry alone gives no grid but matching materials (some grouped as one) would, keep to "
                     "geometry and only name the options in a hint (default: go on with the materials matched)");
-  add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y; stored in the grammar file for generate");
+  add_up_option(*command, options->up, std::string(kSymmetryUpAxisHelp) + "; stored in the grammar file for generate");
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
@@ -106,7 +106,8 @@ void add_analyze_command(CLI::App& app) {
     grammar.r = prepared.surface.r();
     grammar.eps = prepared.surface.eps();
     grammar.origin = prepared.origin;
-    grammar.up_axis = model_up_axis(options->model.model_path, options->up);
+    const UpAxisChoice up = symmetry_up_axis(options->model.model_path, options->up, symmetries);
+    grammar.up_axis = up.axis;
     grammar.exemplar = prepared.model.mesh;
     if (prepared.model.is_point_cloud()) grammar.exemplar_points = prepared.model.cloud;
     grammar.materials = prepared.model.materials;
@@ -126,7 +127,7 @@ void add_analyze_command(CLI::App& app) {
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
-                          folder / (stem + ".report.md"), {}, hint, materials};
+                          folder / (stem + ".report.md"), {}, hint, materials, up.turn};
     write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)

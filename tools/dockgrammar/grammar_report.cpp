@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 namespace dg::cli {
@@ -554,6 +555,7 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
           {"r", report.prepared.surface.r()},
           {"eps", report.prepared.surface.eps()},
           {"origin", coordinates_json(report.prepared.origin)},
+          {"up", report.grammar.up_axis.empty() ? nlohmann::json(nullptr) : nlohmann::json(report.grammar.up_axis)},
           {"tolerance", match_tolerances(report).offset_eps},
           {"point_cloud", cloud ? nlohmann::json{{"points", report.prepared.model.cloud.positions.size()},
                                                  {"points_per_voxel", points_per_voxel(report.prepared)},
@@ -602,6 +604,14 @@ void write_analysis_report(const AnalysisReport& report) {
   md += fmt::format("Cells match when the planes and feature lines of one, moved, lie within {:.3g}° and {:.3g} eps "
                     "of the other's (`--tolerance`).\n\n",
                     match_tolerances(report).angle_degrees, match_tolerances(report).offset_eps);
+  if (const std::optional<TurnAxis>& turn = report.up_from_turn) {
+    const SymmetryFamily& family = report.symmetries.families[turn->family];
+    md += fmt::format("Up axis {}: the axis of {} F{} ({:.3g} deg steps), whose motions map {:.1f} % of the surface onto "
+                      "itself. Pictures stand the model on it and generate keeps pieces upright about it (`--up` sets "
+                      "another).\n\n",
+                      report.grammar.up_axis, family.kind, turn->family + 1, family.generator.angle() * 180.0 / std::numbers::pi,
+                      100.0 * turn->fraction);
+  }
   md += materials_paragraph(prepared);
   if (const std::string moved = origin_text(prepared); !moved.empty()) md += moved + "\n\n";
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";

@@ -8,6 +8,7 @@
 #include "grammar/material_hint.h"
 #include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
+#include "symmetry/turn_axis.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,12 +31,13 @@ struct AnalysisReport {
   std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
   std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
   std::optional<MaterialHint> material_hint;    ///< material matching that gives grids (grammar/material_hint.h), applied or not
+  std::optional<TurnAxis> up_from_turn;         ///< the turn grammar.up_axis was read from (no --up, not glTF)
 };
 
 /// Short readable summary for stdout.
 std::string analysis_text(const AnalysisReport& report);
 
-/// {r, eps, materials (names), match_materials, material_groups, material_hint (null, or
+/// {r, eps, up (the stored up axis "x", "y" or "z", or null: pictures guess), materials (names), match_materials, material_groups, material_hint (null, or
 /// {same_material: [[names]] (empty: --match-materials alone), grid_counts, applied: analyze went
 /// on with them}), symmetries, families,
 /// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,

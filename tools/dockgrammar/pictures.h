@@ -6,11 +6,13 @@
 #include "geometry/model_io.h"
 #include "geometry/voxel_surface.h"
 #include "geometry/render_mesh.h"
+#include "symmetry/turn_axis.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,21 @@ void add_up_option(CLI::App& command, std::string& axis, const std::string& fall
 /// The up axis to use for a model file: `given` (from --up) when set; else "y" for glTF files
 /// (.gltf/.glb: glTF 2.0 defines +Y as up); else empty (guess from the shape, see picture_options).
 std::string model_up_axis(const std::string& model_path, const std::string& given);
+
+/// The up axis a command that found the model's symmetries draws with (and analyze stores for
+/// generate and resize), and the turn it was read from: model_up_axis's when that is set; else
+/// the coordinate axis of the model's dominant turn (symmetry/turn_axis.h), as "x", "y" or "z";
+/// else empty (picture_options guesses from the bounds).
+struct UpAxisChoice {
+  std::string axis;
+  std::optional<TurnAxis> turn;  ///< set when the axis is the turn's
+};
+UpAxisChoice symmetry_up_axis(const std::string& model_path, const std::string& given, const SymmetryResult& symmetries);
+
+/// Help text of --up for the commands that choose with symmetry_up_axis.
+inline constexpr const char* kSymmetryUpAxisHelp =
+    "y for glTF files; else the axis of a turn (3 or more steps to a full turn) that maps half the surface onto itself; "
+    "else z for a thin wall in the x-z plane, else y";
 
 /// A model is guessed to be a z-up wall when its y extent is below this fraction of its smaller
 /// x or z extent (walls and fences standing in the x-z plane: 0.03-0.26 for the bundled ones).

@@ -29,14 +29,15 @@ void add_symmetry_command(CLI::App& app) {
       ->capture_default_str()
       ->check(number_in(std::size_t{1}, std::size_t{100000}));
   command->add_option("-o,--output", options->output, "Folder for coloured PLY and PNG pictures of the top symmetries");
-  add_up_option(*command, options->up, "y for glTF files; else z for a thin wall in the x-z plane, else y");
+  add_up_option(*command, options->up, kSymmetryUpAxisHelp);
   command->callback([options] {
     const auto threads = limit_threads(options->model.threads);
     const ProgressCallback progress = stderr_progress(options->model.quiet);
     const PreparedModel prepared = prepare_model(options->model.model_path, options->model.prepare, progress);
     const SymmetryResult result = detect_symmetries(prepared, symmetry_options(options->search), progress);
     if (!options->output.empty())
-      write_symmetry_pictures(options->output, prepared, result, options->top, model_up_axis(options->model.model_path, options->up));
+      write_symmetry_pictures(options->output, prepared, result, options->top,
+                              symmetry_up_axis(options->model.model_path, options->up, result).axis);
     if (options->model.json) {
       nlohmann::json out = symmetry_json(result, options->top, prepared.origin);
       out["model"] = prepared.model.source_path;
