@@ -24,6 +24,18 @@ double TriangleMesh::area() const {
   return sum;
 }
 
+std::vector<Vec3> vertex_normals(const TriangleMesh& mesh) {
+  std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 area_vector = mesh.area_vector(t);
+    if (area_vector.squaredNorm() <= 0.0) continue;
+    for (std::uint32_t v : mesh.triangles[t]) normals[v] += area_vector.normalized();
+  }
+  for (Vec3& n : normals)
+    if (n.squaredNorm() > 0.0) n.normalize();
+  return normals;
+}
+
 BoundingBox PointCloud::bounds() const {
   BoundingBox box;
   for (const Vec3& p : positions) box.add(p);

@@ -41,6 +41,10 @@ struct TriangleMesh {
   double area() const;
 };
 
+/// One unit normal per vertex of `mesh`: the normalized sum of the unit normals of the triangles
+/// that use it (zero for a vertex no triangle with area uses).
+std::vector<Vec3> vertex_normals(const TriangleMesh& mesh);
+
 /// Unordered points, optionally with unit normals (normals empty or one per point).
 struct PointCloud {
   std::vector<Vec3> positions;

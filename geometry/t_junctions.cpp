@@ -144,11 +144,16 @@ std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std:
   const std::vector<char>* only = seam_copies ? &seam : nullptr;
   // A vertex of an edge's own copy farther from it than `same_copy_tolerance` lies on it within
   // that copy's piece: a touching part of the copy, which the edge does not meet in the piece
-  // either, so it does not split the edge (a closer one closes a crack of the piece).
+  // either, so it does not split the edge (a closer one closes a crack of the piece). Nor does a
+  // vertex whose surface faces away from the edge's triangle, of any copy: a touching part cut
+  // along the same line (a leg's top under a seat). Splits add no vertices, so the normals hold.
+  const std::vector<Vec3> normals = seam_copies ? vertex_normals(mesh) : std::vector<Vec3>{};
   auto splits_edge = [&](std::uint32_t v, std::uint32_t triangle, double distance) {
     if (distance > tolerance) return false;
-    if (!seam_copies || distance <= same_copy_tolerance) return true;
-    return std::find(copies_of[v].begin(), copies_of[v].end(), triangle_copy[triangle]) == copies_of[v].end();
+    if (!seam_copies) return true;
+    if (normals[v].dot(mesh.area_vector(triangle)) < 0.0) return false;
+    return distance <= same_copy_tolerance ||
+           std::find(copies_of[v].begin(), copies_of[v].end(), triangle_copy[triangle]) == copies_of[v].end();
   };
   // Split triangles keep their index (the first part replaces them, the others are appended),
   // so the list of triangles that can hold seam edges only grows.

@@ -13,10 +13,11 @@ namespace dg {
 /// sliver whose third corner lies on its own split edge has no area and is dropped.
 /// With `seam_copies` (one label per vertex: the placed copy of a piece whose open edge the
 /// vertex lies on, kNotOnSeam for the other vertices, see append_seam_labels), only seam vertices
-/// are welded, each to the nearest within `tolerance` that no vertex of its own copy joined
-/// unless within `same_copy_tolerance` (two parts of one copy that touch stay apart, as in the
-/// piece; see weld_vertices), and only edges between them are examined, which is much faster on
-/// large assemblies.
+/// are welded, each to the nearest within `tolerance` that does not face away from it and that
+/// no vertex of its own copy joined unless within `same_copy_tolerance` (two parts that touch stay
+/// apart, as in the piece; see weld_vertices); an open edge is split at a vertex on the same
+/// terms (its triangle's normal against the vertex's); and only edges between seam vertices are
+/// examined, which is much faster on large assemblies.
 std::size_t resolve_t_junctions(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>* seam_copies = nullptr,
                                 double same_copy_tolerance = 0.0);
 

@@ -61,8 +61,8 @@ std::vector<std::uint32_t> weld_first(TriangleMesh& mesh, double tolerance) {
 }
 
 // Labelled weld: each labelled vertex, in index order, joins the nearest kept vertex within
-// `tolerance` that no vertex of its copy joined but its seam neighbour (or one within
-// `same_copy_tolerance`).
+// `tolerance` whose surface does not face away from its own and that no vertex of its copy
+// joined but its seam neighbour (or one within `same_copy_tolerance`).
 std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, const std::vector<std::uint32_t>& copies,
                                        double same_copy_tolerance) {
   const double cell = std::max(tolerance, 1e-300) * 4.0;
@@ -73,6 +73,11 @@ std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, con
   std::vector<std::uint32_t> next_member(mesh.positions.size(), kEnd);
   std::vector<std::uint32_t> remap(mesh.positions.size());
   std::vector<Vec3> kept;
+  // The normal of each vertex's surface, and of the vertex each kept one was first: touching
+  // parts face away from each other (a leg's top against a seat's underside), and the seams of
+  // both, cut along one line, lie at one spot.
+  const std::vector<Vec3> normals = vertex_normals(mesh);
+  std::vector<Vec3> kept_normals;
   // Open edges of the copies (used by one triangle, both ends labelled): their seam edges.
   auto edge_key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); };
   std::unordered_map<std::uint64_t, int> seam_edge_uses;
@@ -108,7 +113,7 @@ std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, con
             if (bucket == head.end()) continue;
             for (std::uint32_t w = bucket->second; w != kEnd; w = next[w]) {
               const double distance = (kept[w] - p).norm();
-              if (distance <= nearest && (distance < nearest || w < found) &&
+              if (distance <= nearest && (distance < nearest || w < found) && kept_normals[w].dot(normals[v]) >= 0.0 &&
                   (distance <= same_copy_tolerance || !holds_copy(w, v))) {
                 found = w;
                 nearest = distance;
@@ -119,6 +124,7 @@ std::vector<std::uint32_t> weld_copies(TriangleMesh& mesh, double tolerance, con
     if (found == kEnd) {
       found = static_cast<std::uint32_t>(kept.size());
       kept.push_back(p);
+      kept_normals.push_back(normals[v]);
       next.push_back(kEnd);
       first_member.push_back(kEnd);
       if (copies[v] != kNotOnSeam) {  // unlabelled vertices are never joined

@@ -18,9 +18,11 @@ inline constexpr std::uint32_t kNotOnSeam = std::numeric_limits<std::uint32_t>::
 /// become degenerate (the others keep their materials). Without `copies`, each vertex joins the
 /// first earlier kept vertex found within `tolerance`. With `copies` (one label per vertex),
 /// vertices labelled kNotOnSeam are kept as they are, and each other vertex joins the nearest
-/// earlier kept vertex within `tolerance` that no vertex of its own copy joined, or that lies
-/// within `same_copy_tolerance`: touching parts of one copy stay apart, its duplicate vertices
-/// merge. A vertex of its copy that is its neighbour along an open edge (a seam edge of the
+/// earlier kept vertex within `tolerance` whose surface does not face away from its own (their
+/// vertex normals, see vertex_normals, at most 90 degrees apart: the seams of a leg's top and of
+/// the seat's underside it touches stay apart) and that no vertex of its own copy joined, or that
+/// lies within `same_copy_tolerance`: touching parts of one copy stay apart, its duplicate
+/// vertices merge. A vertex of its copy that is its neighbour along an open edge (a seam edge of the
 /// copy) does not count: such an edge, shorter than the tolerance, collapses when both its ends
 /// lie nearest to one vertex (kept, the second end would fold back across the first). Returns
 /// the new index of every old vertex. Deterministic.

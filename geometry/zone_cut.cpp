@@ -248,6 +248,9 @@ void merge_coincident(ZoneCut& out, std::uint32_t first_new, const std::vector<c
   };
   std::map<Key, std::vector<std::uint32_t>> grid;
   const std::vector<Vec3>& positions = out.mesh.positions;
+  // Touching parts cut along one plane (a leg's top under a seat) make vertices at one spot on
+  // surfaces that face away from each other: those stay apart, as the parts were.
+  const std::vector<Vec3> normals = vertex_normals(out.mesh);
   std::vector<std::uint32_t> target(positions.size());
   std::iota(target.begin(), target.end(), 0u);
   for (std::uint32_t v = 0; v < positions.size(); ++v) {
@@ -260,7 +263,7 @@ void merge_coincident(ZoneCut& out, std::uint32_t first_new, const std::vector<c
             const auto bucket = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
             if (bucket == grid.end()) continue;
             for (std::uint32_t w : bucket->second)
-              if ((positions[w] - positions[v]).norm() <= tolerance) {
+              if ((positions[w] - positions[v]).norm() <= tolerance && normals[w].dot(normals[v]) >= 0.0) {
                 target[v] = w;
                 break;
               }

@@ -36,7 +36,9 @@ using PieceFilter = std::function<bool(const std::array<Vec3, 3>& corners, std::
 /// of a plane are moved onto it. Every triangle and piece is then split at the vertices that
 /// cuts of its neighbours created on its edges, so the mesh stays conforming; new vertices
 /// within `tolerance` of an earlier vertex of the cut are merged into it (triangles left with a
-/// repeated corner go), so no two vertices share a spot. Deterministic.
+/// repeated corner go), so no two vertices of one surface share a spot, unless their surfaces face
+/// away from each other (vertex normals more than 90 degrees apart: touching parts, such as a
+/// leg's top and the seat's underside on it, cut along the same lines, stay apart). Deterministic.
 ZoneCut cut_zone(const TriangleMesh& mesh, const std::vector<char>& zone, const std::vector<PlaneFamily>& families,
                  double tolerance, const PieceFilter& wanted = {});
 

@@ -142,6 +142,33 @@ TEST_CASE("two touching parts of one copy stay apart when copies are welded", "[
   }
 }
 
+TEST_CASE("two parts touching face to face stay apart when copies are welded", "[geometry][t_junctions]") {
+  // In each copy a seat's underside (facing -z) and a leg's top (facing +z, with midpoints on its
+  // sides) lie in one plane, as touching boxes are modelled: their corners coincide exactly and
+  // the top's midpoints lie exactly on the underside's sides, closer than any same-copy
+  // tolerance, and so do those of the other copy. Copy 1 is copy 0 moved by 1 along x.
+  dg::TriangleMesh mesh;
+  std::vector<std::uint32_t> copies;
+  for (std::uint32_t copy = 0; copy < 2; ++copy) {
+    for (const bool top : {false, true}) {
+      dg::TriangleMesh part = square_part(copy, 0.0, top);
+      if (!top)
+        for (dg::Triangle& t : part.triangles) std::swap(t[1], t[2]);
+      append(mesh, part);
+      dg::append_seam_labels(copies, dg::open_edge_vertices(part), copy);
+    }
+  }
+  dg::resolve_t_junctions(mesh, 1e-4, &copies, 1e-9);
+  const dg::EdgeStatistics edges = dg::edge_statistics(mesh);
+  CHECK(edges.non_manifold_edges == 0);
+  CHECK(edges.inconsistent_edges == 0);
+  CHECK(edges.boundary_edges == 6 + 8);  // each side's copies join into one 2 x 1 rectangle
+  CHECK(mesh.area() == Approx(4.0));
+  std::size_t parts = 0;
+  dg::triangle_components(mesh, &parts);
+  CHECK(parts == 2);
+}
+
 TEST_CASE("labelled weld: duplicate vertices of one copy merge within the same-copy tolerance", "[geometry][t_junctions]") {
   // One copy's square split into two triangles with unshared corners (as unwelded files have),
   // and copy 1 beside it.
