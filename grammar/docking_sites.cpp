@@ -288,10 +288,11 @@ void sites_of_motion(const MotionContext& m, const DockingSiteOptions& options, 
   }
 }
 
-// r-symmetric cells of the inverse motion, grown from the images of the forward region (a
-// point cloud's isolated outlier cells count as symmetric, as in the forward region).
+// r-symmetric cells of the inverse motion, grown from the images of the forward region and,
+// given `parts`, into parts those do not reach (a point cloud's isolated outlier cells count as
+// symmetric), as the forward region was.
 std::vector<char> inverse_region(const VoxelSurface& surface, const CellMatcher& matcher, const DetectedSymmetry& symmetry,
-                                 const RigidTransform& inverse, bool point_cloud) {
+                                 const RigidTransform& inverse, bool point_cloud, const SurfaceParts* parts) {
   const Cells& forward = symmetry.region.r_symmetric_cells;
   Cells seeds;
   const std::size_t step = std::max<std::size_t>(1, forward.size() / 64);
@@ -301,7 +302,7 @@ std::vector<char> inverse_region(const VoxelSurface& surface, const CellMatcher&
   }
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  const SymmetricRegion region = symmetric_region(matcher, surface, inverse, seeds, point_cloud);
+  const SymmetricRegion region = symmetric_region(matcher, surface, inverse, seeds, point_cloud, parts);
   return mask_of(region.r_symmetric_cells, surface.cell_count());
 }
 
@@ -332,6 +333,7 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
     else
       ++result.stats.symmetries_skipped;
   }
+  const std::optional<SurfaceParts> parts = point_cloud ? std::nullopt : std::optional<SurfaceParts>(surface_parts(surface));
   // Each motion (symmetry and direction) is independent: computed in parallel, joined in order.
   std::vector<DockingSiteResult> per_motion(2 * chosen.size());
   parallel_for_reporting(per_motion.size(), progress, "docking sites", [&](std::size_t m) {
@@ -339,7 +341,7 @@ DockingSiteResult find_docking_sites(const PreparedModel& prepared, const Symmet
     const bool inverse = m % 2 == 1;
     const DetectedSymmetry& symmetry = symmetries.symmetries[i];
     const RigidTransform t = inverse ? symmetry.transform.inverse() : symmetry.transform;
-    std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t, point_cloud)
+    std::vector<char> symmetric = inverse ? inverse_region(surface, matcher, symmetry, t, point_cloud, parts ? &*parts : nullptr)
                                           : mask_of(symmetry.region.r_symmetric_cells, surface.cell_count());
     const MotionContext context{surface, matcher, t, std::move(symmetric), surface.r()};
     DockingSiteResult& local = per_motion[m];

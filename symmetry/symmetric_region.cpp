@@ -222,16 +222,34 @@ bool CellMatcher::symmetric(std::uint32_t cell, const RigidTransform& t, const R
   return image >= 0 && maps_onto_surface(static_cast<std::uint32_t>(image), inverse);
 }
 
+SurfaceParts surface_parts(const VoxelSurface& surface) {
+  constexpr std::size_t kSamples = 8;
+  SurfaceParts parts;
+  std::size_t count = 0;
+  parts.part_of = surface.components(&count);
+  std::vector<std::size_t> size(count, 0), seen(count, 0);
+  for (std::uint32_t part : parts.part_of) ++size[part];
+  parts.samples.resize(count);
+  // Cells are numbered in order of their voxel coordinates: every stride-th cell of a part lies
+  // spread across it.
+  for (std::uint32_t c = 0; c < parts.part_of.size(); ++c) {
+    const std::uint32_t part = parts.part_of[c];
+    if (seen[part]++ % std::max<std::size_t>(1, size[part] / kSamples) == 0) parts.samples[part].push_back(c);
+  }
+  return parts;
+}
+
 SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
-                                 std::span<const std::uint32_t> seeds, bool fill_outliers) {
+                                 std::span<const std::uint32_t> seeds, bool fill_outliers, const SurfaceParts* parts) {
   SymmetricRegion region;
   const RigidTransform inverse = t.inverse();
   enum : std::uint8_t { unknown, yes, no };
   std::vector<std::uint8_t> state(surface.cell_count(), unknown);
-  std::vector<std::uint32_t> queue;
+  std::vector<std::uint32_t> queue, tested;
   auto test = [&](std::uint32_t c) {
     if (state[c] != unknown) return;
     ++region.cells_tested;
+    if (parts) tested.push_back(c);
     state[c] = matcher.symmetric(c, t, inverse) ? yes : no;
     if (state[c] == yes) queue.push_back(c);
   };
@@ -245,6 +263,26 @@ SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface&
   }
   for (std::size_t head = 0; head < queue.size(); ++head)
     for (std::uint32_t n : surface.neighbours(queue[head])) test(n);
+  // Parts that no seed reached (a table's top beside the chairs that hold the seeds): their
+  // sample cells are tested, and when most pass, the region grows from them. A part only a patch
+  // of which maps onto the model (a box's flat face under a half turn about a line in that face)
+  // stays out: such patches are chance, not a repeat of the part.
+  if (parts) {
+    std::vector<char> reached(parts->samples.size(), 0);
+    for (std::uint32_t c : tested) reached[parts->part_of[c]] = 1;
+    for (std::size_t p = 0; p < parts->samples.size(); ++p) {
+      if (reached[p]) continue;
+      const std::size_t grown = queue.size();
+      for (std::uint32_t c : parts->samples[p]) test(c);
+      if (2 * (queue.size() - grown) < parts->samples[p].size()) {
+        for (std::size_t k = grown; k < queue.size(); ++k) state[queue[k]] = no;
+        queue.resize(grown);
+        continue;
+      }
+      for (std::size_t head = grown; head < queue.size(); ++head)
+        for (std::uint32_t n : surface.neighbours(queue[head])) test(n);
+    }
+  }
 
   if (fill_outliers) {
     std::vector<std::uint32_t> filled;

@@ -89,9 +89,21 @@ struct SymmetricRegion {
   bool rejected_early = false;
 };
 
+/// The connected parts of a voxel surface (26-adjacency) and about 8 cells spread over each,
+/// for symmetric_region to grow into parts its seeds do not reach.
+struct SurfaceParts {
+  std::vector<std::uint32_t> part_of;               ///< part per cell
+  std::vector<std::vector<std::uint32_t>> samples;  ///< per part, cells spread over it
+};
+
+/// Labels the parts of `surface` and picks their sample cells.
+SurfaceParts surface_parts(const VoxelSurface& surface);
+
 /// Grows xi(T) from `seeds` through 26-adjacent cells that pass CellMatcher::symmetric (cells
-/// not connected to a seed through symmetric cells are not found), then erodes it: a cell stays
-/// in xi_r(T) when its intrinsic distance to the nearest non-symmetric cell exceeds r.
+/// not connected to a seed through symmetric cells are not found), then, given `parts`, from the
+/// sample cells of each part that growing did not reach (a table top apart from the chairs that
+/// hold the seeds) when most of them pass, and erodes it: a cell stays in xi_r(T) when its
+/// intrinsic distance to the nearest non-symmetric cell exceeds r.
 /// Point clouds (`fill_outliers`): a failed cell whose neighbours are mostly symmetric counts
 /// as symmetric (isolated outliers inside symmetric area), and so does a cluster of failed cells
 /// (with the untested cells they enclose) that symmetric cells surround, when it has at most
@@ -99,7 +111,8 @@ struct SymmetricRegion {
 /// quarter of the seeds (a tenth for point clouds) are symmetric, the candidate is bad and the
 /// region is returned empty without growing.
 SymmetricRegion symmetric_region(const CellMatcher& matcher, const VoxelSurface& surface, const RigidTransform& t,
-                                 std::span<const std::uint32_t> seeds, bool fill_outliers);
+                                 std::span<const std::uint32_t> seeds, bool fill_outliers,
+                                 const SurfaceParts* parts = nullptr);
 
 /// xi(T) with every cell of the surface tested in parallel (not only those connected to seeds),
 /// and its erosion xi_r(T).

@@ -99,6 +99,8 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
   start = std::chrono::steady_clock::now();
   report_progress(progress, "symmetric regions", 0.3);
   const CellMatcher matcher(surface, prepared.model.is_point_cloud() ? &prepared.model.cloud : nullptr, options.region);
+  const std::optional<SurfaceParts> parts =
+      prepared.model.is_point_cloud() ? std::nullopt : std::optional<SurfaceParts>(surface_parts(surface));
   const double total = surface.total_area();
   const double area_scale = prepared.model.is_point_cloud() || total <= 0.0 ? 1.0 : prepared.model.mesh.area() / total;
   // Verifies one candidate; an empty optional when it is rejected (counted in `stats`).
@@ -117,7 +119,8 @@ SymmetryResult detect_symmetries(const PreparedModel& prepared, const SymmetryOp
     }
     std::sort(seeds.begin(), seeds.end());
     seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-    SymmetricRegion region = symmetric_region(matcher, surface, candidate.transform, seeds, prepared.model.is_point_cloud());
+    SymmetricRegion region = symmetric_region(matcher, surface, candidate.transform, seeds, prepared.model.is_point_cloud(),
+                                              parts ? &*parts : nullptr);
     ++stats.verified;
     if (region.rejected_early) {
       ++stats.rejected_early;

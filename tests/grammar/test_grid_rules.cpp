@@ -452,7 +452,43 @@ dg::TriangleMesh crates(int across, int deep, int high) {
   return mesh;
 }
 
+// A table top 0.6 n + 0.4 long with n chairs along one side at a pitch of 0.6, z up: seat, four
+// legs touching it and a back standing on it, none touching the top.
+dg::TriangleMesh table_with_chairs(int n) {
+  dg::TriangleMesh mesh = dg::test::make_box(Vec3(0, -0.45, 0.72), Vec3(0.6 * n + 0.4, 0.45, 0.76));
+  for (int i = 0; i < n; ++i) {
+    const double x = 0.5 + 0.6 * i;
+    dg::test::append(mesh, dg::test::make_box(Vec3(x - 0.2, 0.55, 0.42), Vec3(x + 0.2, 0.95, 0.46)));
+    for (const double dx : {-0.17, 0.17})
+      for (const double dy : {-0.17, 0.17})
+        dg::test::append(mesh, dg::test::make_box(Vec3(x + dx - 0.02, 0.75 + dy - 0.02, 0), Vec3(x + dx + 0.02, 0.75 + dy + 0.02, 0.42)));
+    dg::test::append(mesh, dg::test::make_box(Vec3(x - 0.2, 0.92, 0.46), Vec3(x + 0.2, 0.96, 0.9)));
+  }
+  return mesh;
+}
+
 }  // namespace
+
+// The chairs hold every seed of the translation by the chair pitch; the top, apart from them,
+// was never reached, so it counted as asymmetric, no plane could cross it, and the grid passed
+// the planes by the chairs instead, the last one moved with the tail: count 3.
+TEST_CASE("a table top beside four chairs it does not touch: a 1-grid of four whose planes cross the top",
+          "[grammar][grid]") {
+  dg::Model model;
+  model.mesh = table_with_chairs(4);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  const dg::GridDirection& row = grids[0].directions[0];
+  CHECK(row.translation.isApprox(Vec3(0.6, 0, 0), 1e-6));
+  CHECK(row.count == 4);
+  CHECK(row.whole_in_head.empty());
+  CHECK(row.whole_in_tail.empty());
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grids[0], prepared.surface.eps());
+  CHECK(dg::test::hausdorff_distance(dg::resize_grid(grids[0], pieces, {6}, prepared.surface.eps()), table_with_chairs(6)) <
+        1e-3 * prepared.surface.eps());
+}
 
 TEST_CASE("a stack of 2 x 2 x 2 crates: a 3-grid of two units each way, though it spans less than two pitches",
           "[grammar][grid]") {

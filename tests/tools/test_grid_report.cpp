@@ -91,8 +91,9 @@ TEST_CASE("analyze: a further run of a grid's motion says so, with where both ru
 
 TEST_CASE("analyze: a grid over a short stretch of a translation's repeats is named as not built for the rest",
           "[tools][grids]") {
-  // 16 posts 2 apart above one bar, whose top rises as a ramp under the first 10 (x = 3 .. 20):
-  // the posts' translation repeats 15 times, but only the slabs beyond the ramp repeat.
+  // 16 posts 2 apart standing on one bar, whose top rises as a ramp under the first 10 (x = 3 ..
+  // 20), all reaching z = 4: the posts' translation repeats 15 times (their upper parts), but
+  // only the slabs beyond the ramp repeat whole.
   const std::vector<std::pair<double, double>> profile{{-1, -1}, {32, -1}, {32, 0}, {20, 0}, {20, 1}, {3, 0}, {-1, 0}};  // x, z
   dg::TriangleMesh mesh;
   for (const double y : {-0.5, 1.0})
@@ -107,11 +108,13 @@ TEST_CASE("analyze: a grid over a short stretch of a translation's repeats is na
     mesh.triangles.push_back({i, j, n + j});
     mesh.triangles.push_back({i, n + j, n + i});
   }
-  for (int i = 0; i < 16; ++i) dg::test::append(mesh, dg::test::make_box(dg::Vec3(2.0 * i, 0.0, 1.2), dg::Vec3(2.0 * i + 0.5, 0.5, 4.0)));
+  auto bar_top = [](double x) { return x > 3 && x < 20 ? (x - 3) / 17 : 0.0; };
+  for (int i = 0; i < 16; ++i)
+    dg::test::append(mesh, dg::test::make_box(dg::Vec3(2.0 * i, 0.0, bar_top(2.0 * i + 0.25)), dg::Vec3(2.0 * i + 0.5, 0.5, 4.0)));
   const std::string report = analyze_report(mesh, "ramp");
   INFO(report);
-  CHECK(report.find("### grid1 (1-grid, counts 4)") != std::string::npos);
-  const std::size_t named = report.find("(15 repeats of |t| = 2): the grids along it span only 4 of its repeats");
+  CHECK(report.find("### grid1 (1-grid, counts 6)") != std::string::npos);
+  const std::size_t named = report.find("(15 repeats of |t| = 2): the grids along it span only 6 of its repeats");
   REQUIRE(named != std::string::npos);
   CHECK(report.find("## Not yet built") < named);
 }
