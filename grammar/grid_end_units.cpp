@@ -1,5 +1,6 @@
 #include "grammar/grid_end_units.h"
 
+#include "geometry/flat_regions.h"
 #include "geometry/same_surface.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -60,26 +62,29 @@ TriangleMesh with_material_classes(TriangleMesh mesh, std::span<const std::uint3
   return mesh;
 }
 
+// The connected parts (of `parts`) lying wholly in the repeated unit's slab, within `tolerance`.
+std::vector<std::size_t> unit_parts(const GridDirection& direction, const MeshAlong& parts, double tolerance) {
+  const double unit_lo = direction.cut + direction.head_units * direction.pitch, unit_hi = unit_lo + direction.pitch;
+  std::vector<std::size_t> own;
+  for (std::size_t c = 0; c < parts.part_triangles.size(); ++c)
+    if (parts.part_spans[c].first >= unit_lo - tolerance && parts.part_spans[c].second <= unit_hi + tolerance) own.push_back(c);
+  return own;
+}
+
 // Units beyond a direction's planes, past the `head` and `tail` units counted so far, whose own
 // parts are copies of the repeated unit's though their slabs are not (a colonnade's end columns,
-// under the ends of its beam and steps): the walk goes outward at each end while every connected
-// part lying wholly in the repeated unit's slab (of area `unit_area`) has a copy moved by the
-// motion's power to that slab (centroids within `tolerance`, the same surface, the same area).
-// Nothing when those parts make up less than kOwnPartsShare of the slab. Returns the units found
-// before the head and after the tail.
+// under the ends of its beam and steps): the walk goes outward at each end while every part in
+// `own` (unit_parts: lying wholly in the repeated unit's slab, of area `unit_area`) has a copy
+// moved by the motion's power to that slab (centroids within `tolerance`, the same surface, the
+// same area). Nothing when those parts make up less than kOwnPartsShare of the slab. Returns the
+// units found before the head and after the tail.
 std::pair<int, int> units_by_own_parts(const GridDirection& direction, const TriangleMesh& mesh, const MeshAlong& parts,
-                                       double tolerance, std::span<const std::uint32_t> material_classes, double unit_area,
-                                       int head, int tail) {
+                                       const std::vector<std::size_t>& own, double tolerance,
+                                       std::span<const std::uint32_t> material_classes, double unit_area, int head, int tail) {
   const Vec3& d = direction.direction;
   const int unit = direction.head_units;  // the repeated unit's slab
-  const double unit_lo = direction.cut + unit * direction.pitch, unit_hi = unit_lo + direction.pitch;
-  std::vector<std::size_t> own;
   double own_area = 0.0;
-  for (std::size_t c = 0; c < parts.part_triangles.size(); ++c)
-    if (parts.part_spans[c].first >= unit_lo - tolerance && parts.part_spans[c].second <= unit_hi + tolerance) {
-      own.push_back(c);
-      own_area += parts.part_areas[c];
-    }
+  for (std::size_t c : own) own_area += parts.part_areas[c];
   if (own.empty() || own_area < kOwnPartsShare * unit_area) return {0, 0};
   auto part_mesh = [&](std::size_t c) { return with_material_classes(submesh(mesh, parts.part_triangles[c]), material_classes); };
   std::map<std::size_t, TriangleMesh> own_meshes;
@@ -99,6 +104,67 @@ std::pair<int, int> units_by_own_parts(const GridDirection& direction, const Tri
   auto copied_to = [&](int k) {
     const RigidTransform motion = power(direction.motion, k - unit);
     return std::all_of(own.begin(), own.end(), [&](std::size_t c) { return has_copy(c, motion); });
+  };
+  int before = 0, after = 0;
+  while (copied_to(-head - before - 1)) ++before;
+  while (copied_to(direction.count + tail + after)) ++after;
+  return {before, after};
+}
+
+// Span of flat region `region` of `mesh` along the unit vector d.
+std::pair<double, double> span_along(const TriangleMesh& mesh, const FlatRegion& region, const Vec3& d) {
+  std::pair<double, double> span{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (std::uint32_t t : region.triangles)
+    for (std::uint32_t v : mesh.triangles[t]) {
+      span.first = std::min(span.first, d.dot(mesh.positions[v]));
+      span.second = std::max(span.second, d.dot(mesh.positions[v]));
+    }
+  return span;
+}
+
+// The flat regions of `slab`, a mesh cut between the planes d . x = lo and hi, that lie wholly
+// between them (more than `margin` from both: faces the planes cross were cut there) and do not
+// lie across d (such faces, a floor plate under every storey, are no sign of a unit: every slab
+// has them whatever else it holds).
+std::vector<FlatRegion> own_flat_regions(const TriangleMesh& slab, const Vec3& d, double lo, double hi, double margin) {
+  const double across_cos = std::cos(kAcrossDegrees * std::numbers::pi / 180.0);
+  std::vector<FlatRegion> own;
+  for (FlatRegion& region : flat_regions(slab, std::vector<char>(slab.triangles.size(), 1))) {
+    if (std::abs(region.normal.dot(d)) >= across_cos) continue;
+    const auto [first, last] = span_along(slab, region, d);
+    if (first > lo + margin && last < hi - margin) own.push_back(std::move(region));
+  }
+  return own;
+}
+
+// Units beyond a direction's planes, past the `head` and `tail` units counted so far, whose own
+// flat faces are copies of the repeated unit's though their slabs are not, as units_by_own_parts
+// does with connected parts, for a unit with no part of its own (every part runs on across its
+// planes): a straight stair's top step, whose tread is a copy though the end of the stair lies
+// in its slab. Own flat faces: the flat
+// regions lying wholly between the unit's planes (a tread, not the sides every plane crosses),
+// at least kOwnPartsShare of the slab's area `unit_area`. `slab(k)`: slab k cut from the mesh.
+std::pair<int, int> units_by_own_faces(const GridDirection& direction, const std::function<const TriangleMesh&(int)>& slab,
+                                       double tolerance, double unit_area, int head, int tail) {
+  const Vec3& d = direction.direction;
+  const int unit = direction.head_units;
+  const double margin = 1e-3 * tolerance;
+  auto lo = [&](int k) { return direction.cut + k * direction.pitch; };
+  const std::vector<FlatRegion> own = own_flat_regions(slab(unit), d, lo(unit), lo(unit + 1), margin);
+  double own_area = 0.0;
+  for (const FlatRegion& region : own) own_area += region.area;
+  if (own.empty() || own_area < kOwnPartsShare * unit_area) return {0, 0};
+  // Whether every own flat face of the unit, moved to slab k, is a flat face there.
+  auto copied_to = [&](int k) {
+    const TriangleMesh& there = slab(k);
+    if (there.triangles.empty()) return false;
+    const std::vector<FlatRegion> moved =
+        own_flat_regions(transformed(slab(unit), power(direction.motion, k - unit)), d, lo(k), lo(k + 1), margin);
+    const std::vector<FlatRegion> found = own_flat_regions(there, d, lo(k), lo(k + 1), margin);
+    if (moved.size() != own.size()) return false;
+    return std::all_of(moved.begin(), moved.end(), [&](const FlatRegion& region) {
+      return std::any_of(found.begin(), found.end(), [&](const FlatRegion& f) { return same_flat_region(region, f, tolerance); });
+    });
   };
   int before = 0, after = 0;
   while (copied_to(-head - before - 1)) ++before;
@@ -225,8 +291,13 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
   // sphere that every plane between them crosses are no row (copying a slab would copy part of
   // the sphere).
   if (!split && direction.count + head + tail >= 2) {
+    // A unit with parts of its own is told by them; one whose parts all run on across its
+    // planes (a stair's body and balusters) by its own flat faces.
+    const std::vector<std::size_t> own = unit_parts(direction, *measured, tolerance);
+    const double unit_area = slabs.area(direction.head_units);
     const auto [more_head, more_tail] =
-        units_by_own_parts(direction, mesh, *measured, tolerance, material_classes, slabs.area(direction.head_units), head, tail);
+        own.empty() ? units_by_own_faces(direction, slab, tolerance, unit_area, head, tail)
+                    : units_by_own_parts(direction, mesh, *measured, own, tolerance, material_classes, unit_area, head, tail);
     head += more_head;
     tail += more_tail;
   }
