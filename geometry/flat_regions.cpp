@@ -116,7 +116,7 @@ bool outline_within(const std::vector<Segment>& from, const std::vector<Segment>
 
 }  // namespace
 
-std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector<char>& wanted) {
+std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector<char>& wanted, FlatJoin join) {
   if (mesh.triangles.empty()) return {};
   const double tolerance = kFlatFraction * mesh.bounds().diagonal();
   const std::vector<std::uint32_t> face_of = flat_faces(mesh, {}, tolerance);
@@ -139,10 +139,27 @@ std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector
     const Vec3 normal = f.area_vector.normalized();
     return !f.outline.empty() && on_plane(mesh, g.outline, mesh.positions[f.outline.front().first], normal, tolerance);
   };
+  // Corners of each face's outline, ascending (for FlatJoin::sharing_corners).
+  std::vector<std::vector<std::uint32_t>> corners(join == FlatJoin::sharing_corners ? faces.size() : 0);
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    for (const Edge& e : faces[i].outline) corners[i].insert(corners[i].end(), {e.first, e.second});
+    std::sort(corners[i].begin(), corners[i].end());
+    corners[i].erase(std::unique(corners[i].begin(), corners[i].end()), corners[i].end());
+  }
+  auto joined = [&](std::uint32_t i, std::uint32_t j) {
+    if (join == FlatJoin::coplanar) return true;
+    std::size_t a = 0, b = 0;
+    while (a < corners[i].size() && b < corners[j].size()) {
+      if (corners[i][a] == corners[j][b]) return true;
+      corners[i][a] < corners[j][b] ? ++a : ++b;
+    }
+    return false;
+  };
   for (std::uint32_t i = 0; i < faces.size(); ++i)
     for (std::uint32_t j = i + 1; j < faces.size(); ++j)
       if (find_root(region, i) != find_root(region, j) && material(faces[i]) == material(faces[j]) &&
-          faces[i].area_vector.dot(faces[j].area_vector) > 0.0 && coplanar(faces[i], faces[j]) && coplanar(faces[j], faces[i]))
+          faces[i].area_vector.dot(faces[j].area_vector) > 0.0 && joined(i, j) && coplanar(faces[i], faces[j]) &&
+          coplanar(faces[j], faces[i]))
         region[find_root(region, j)] = find_root(region, i);
   std::vector<FlatRegion> regions;
   std::vector<std::uint32_t> region_slot(faces.size(), kNone);
@@ -175,6 +192,16 @@ std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector
       out.outline.push_back({mesh.positions[e.first], mesh.positions[e.second]});
   }
   return regions;
+}
+
+FlatRegion moved_region(const FlatRegion& region, const TriangleMesh& mesh, const RigidTransform& motion) {
+  FlatRegion moved = region;
+  moved.normal = motion.apply_direction(region.normal);
+  moved.bounds = BoundingBox{};
+  for (std::uint32_t t : region.triangles)
+    for (std::uint32_t v : mesh.triangles[t]) moved.bounds.add(motion.apply(mesh.positions[v]));
+  for (Segment& s : moved.outline) s = {motion.apply(s[0]), motion.apply(s[1])};
+  return moved;
 }
 
 bool same_flat_region(const FlatRegion& x, const FlatRegion& y, double distance) {

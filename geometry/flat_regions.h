@@ -5,6 +5,7 @@
 // different ways from copy to copy; the region and its outline stay the same.
 
 #include "geometry/mesh.h"
+#include "geometry/rigid_transform.h"
 #include "geometry/segment_index.h"
 
 #include <cstdint>
@@ -25,10 +26,19 @@ struct FlatRegion {
   std::vector<Segment> outline;
 };
 
+/// Which coplanar flat faces form one region: all of them (faces a cut split apart, meeting only at
+/// T-junctions, and also faces far apart that happen to lie in one plane), or only those joined
+/// through shared corners (a stair's top tread, not the baluster top in its plane further down).
+enum class FlatJoin { coplanar, sharing_corners };
+
 /// The flat regions of `mesh` made of the flat faces that hold a triangle flagged in `wanted` (one
 /// flag per triangle; faces and planes within kFlatFraction of the mesh's bounding-box
 /// diagonal), in order of their first flagged triangle.
-std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector<char>& wanted);
+std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector<char>& wanted, FlatJoin join = FlatJoin::coplanar);
+
+/// `region` (a flat region of `mesh`) moved by `motion`: normal, bounds and outline moved; its
+/// triangles still index `mesh`.
+FlatRegion moved_region(const FlatRegion& region, const TriangleMesh& mesh, const RigidTransform& motion);
 
 /// Whether flat regions x and y are one region, however each is triangulated: the same material
 /// and side up, bounding boxes within `distance` (model units), each outline's ends within

@@ -298,7 +298,7 @@ GridDirection unsettled(const MotionPlanes& planes, double first, int count) {
 void count_copies_beyond(const MotionPlanes& planes, GridDirection& direction) {
   if (planes.search.copy_tolerance <= 0.0) return;
   const TriangleMesh& mesh = planes.prepared.model.mesh;
-  if (!planes.along) planes.along = measure_along(mesh, planes.d);
+  if (!planes.along) planes.along = measure_along(mesh, planes.d, planes.prepared.material_classes);
   count_end_units(direction, mesh, planes.search.copy_tolerance, planes.prepared.material_classes, &*planes.along);
 }
 

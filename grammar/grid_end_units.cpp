@@ -1,6 +1,5 @@
 #include "grammar/grid_end_units.h"
 
-#include "geometry/flat_regions.h"
 #include "geometry/same_surface.h"
 #include "geometry/slab_cut.h"
 #include "geometry/submesh.h"
@@ -8,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -111,59 +109,43 @@ std::pair<int, int> units_by_own_parts(const GridDirection& direction, const Tri
   return {before, after};
 }
 
-// Span of flat region `region` of `mesh` along the unit vector d.
-std::pair<double, double> span_along(const TriangleMesh& mesh, const FlatRegion& region, const Vec3& d) {
-  std::pair<double, double> span{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-  for (std::uint32_t t : region.triangles)
-    for (std::uint32_t v : mesh.triangles[t]) {
-      span.first = std::min(span.first, d.dot(mesh.positions[v]));
-      span.second = std::max(span.second, d.dot(mesh.positions[v]));
-    }
-  return span;
-}
-
-// The flat regions of `slab`, a mesh cut between the planes d . x = lo and hi, that lie wholly
-// between them (more than `margin` from both: faces the planes cross were cut there) and do not
-// lie across d (such faces, a floor plate under every storey, are no sign of a unit: every slab
-// has them whatever else it holds).
-std::vector<FlatRegion> own_flat_regions(const TriangleMesh& slab, const Vec3& d, double lo, double hi, double margin) {
-  const double across_cos = std::cos(kAcrossDegrees * std::numbers::pi / 180.0);
-  std::vector<FlatRegion> own;
-  for (FlatRegion& region : flat_regions(slab, std::vector<char>(slab.triangles.size(), 1))) {
-    if (std::abs(region.normal.dot(d)) >= across_cos) continue;
-    const auto [first, last] = span_along(slab, region, d);
-    if (first > lo + margin && last < hi - margin) own.push_back(std::move(region));
-  }
-  return own;
+// The flat regions of `along` lying wholly between the planes d . x = lo and hi (more than
+// `margin` from both), indices ascending.
+std::vector<std::size_t> regions_between(const MeshAlong& along, double lo, double hi, double margin) {
+  std::vector<std::size_t> inside;
+  auto it = std::upper_bound(along.regions_by_start.begin(), along.regions_by_start.end(),
+                             std::make_pair(lo + margin, std::numeric_limits<std::size_t>::max()));
+  for (; it != along.regions_by_start.end() && it->first < hi - margin; ++it)
+    if (along.region_spans[it->second].second < hi - margin) inside.push_back(it->second);
+  std::sort(inside.begin(), inside.end());
+  return inside;
 }
 
 // Units beyond a direction's planes, past the `head` and `tail` units counted so far, whose own
 // flat faces are copies of the repeated unit's though their slabs are not, as units_by_own_parts
 // does with connected parts, for a unit with no part of its own (every part runs on across its
 // planes): a straight stair's top step, whose tread is a copy though the end of the stair lies
-// in its slab. Own flat faces: the flat
-// regions lying wholly between the unit's planes (a tread, not the sides every plane crosses),
-// at least kOwnPartsShare of the slab's area `unit_area`. `slab(k)`: slab k cut from the mesh.
-std::pair<int, int> units_by_own_faces(const GridDirection& direction, const std::function<const TriangleMesh&(int)>& slab,
+// in its slab. Own flat faces: the flat regions of `along` lying wholly between the unit's
+// planes and not across the direction (a tread, not a floor plate under every storey, which
+// every slab has whatever else it holds, nor the sides every plane crosses), at least
+// kOwnPartsShare of the slab's area `unit_area`.
+std::pair<int, int> units_by_own_faces(const GridDirection& direction, const TriangleMesh& mesh, const MeshAlong& along,
                                        double tolerance, double unit_area, int head, int tail) {
-  const Vec3& d = direction.direction;
   const int unit = direction.head_units;
   const double margin = 1e-3 * tolerance;
   auto lo = [&](int k) { return direction.cut + k * direction.pitch; };
-  const std::vector<FlatRegion> own = own_flat_regions(slab(unit), d, lo(unit), lo(unit + 1), margin);
+  const std::vector<std::size_t> own = regions_between(along, lo(unit), lo(unit + 1), margin);
   double own_area = 0.0;
-  for (const FlatRegion& region : own) own_area += region.area;
+  for (std::size_t r : own) own_area += along.flat_regions[r].area;
   if (own.empty() || own_area < kOwnPartsShare * unit_area) return {0, 0};
   // Whether every own flat face of the unit, moved to slab k, is a flat face there.
   auto copied_to = [&](int k) {
-    const TriangleMesh& there = slab(k);
-    if (there.triangles.empty()) return false;
-    const std::vector<FlatRegion> moved =
-        own_flat_regions(transformed(slab(unit), power(direction.motion, k - unit)), d, lo(k), lo(k + 1), margin);
-    const std::vector<FlatRegion> found = own_flat_regions(there, d, lo(k), lo(k + 1), margin);
-    if (moved.size() != own.size()) return false;
-    return std::all_of(moved.begin(), moved.end(), [&](const FlatRegion& region) {
-      return std::any_of(found.begin(), found.end(), [&](const FlatRegion& f) { return same_flat_region(region, f, tolerance); });
+    const RigidTransform motion = power(direction.motion, k - unit);
+    const std::vector<std::size_t> found = regions_between(along, lo(k), lo(k + 1), margin);
+    return std::all_of(own.begin(), own.end(), [&](std::size_t r) {
+      const FlatRegion moved = moved_region(along.flat_regions[r], mesh, motion);
+      return std::any_of(found.begin(), found.end(),
+                         [&](std::size_t f) { return same_flat_region(moved, along.flat_regions[f], tolerance); });
     });
   };
   int before = 0, after = 0;
@@ -174,7 +156,7 @@ std::pair<int, int> units_by_own_faces(const GridDirection& direction, const std
 
 }  // namespace
 
-MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction) {
+MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction, std::span<const std::uint32_t> material_classes) {
   const Vec3& d = direction;
   MeshAlong along;
   along.lowest = std::numeric_limits<double>::infinity();
@@ -205,6 +187,21 @@ MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction) {
     along.parts_by_position.emplace_back(d.dot(along.part_centroids[c]), c);
   }
   std::sort(along.parts_by_position.begin(), along.parts_by_position.end());
+  const double across_cos = std::cos(kAcrossDegrees * std::numbers::pi / 180.0);
+  for (FlatRegion& region : flat_regions(mesh, std::vector<char>(mesh.triangles.size(), 1), FlatJoin::sharing_corners)) {
+    if (std::abs(region.normal.dot(d)) >= across_cos) continue;
+    region.material = material_classes.empty() ? 0 : material_classes[region.material];
+    std::pair<double, double> span{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    for (std::uint32_t t : region.triangles)
+      for (std::uint32_t v : mesh.triangles[t]) {
+        span.first = std::min(span.first, d.dot(mesh.positions[v]));
+        span.second = std::max(span.second, d.dot(mesh.positions[v]));
+      }
+    along.regions_by_start.emplace_back(span.first, along.flat_regions.size());
+    along.region_spans.push_back(span);
+    along.flat_regions.push_back(std::move(region));
+  }
+  std::sort(along.regions_by_start.begin(), along.regions_by_start.end());
   return along;
 }
 
@@ -214,7 +211,7 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
   const double p = direction.pitch, start = direction.cut;
   const double snap = 1e-6 * tolerance;
   std::optional<MeshAlong> measured_here;
-  if (!measured) measured = &measured_here.emplace(measure_along(mesh, d));
+  if (!measured) measured = &measured_here.emplace(measure_along(mesh, d, material_classes));
   const double lowest = measured->lowest, highest = measured->highest;
 
   auto by_class = [&](TriangleMesh cut) { return with_material_classes(std::move(cut), material_classes); };
@@ -296,7 +293,7 @@ int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double t
     const std::vector<std::size_t> own = unit_parts(direction, *measured, tolerance);
     const double unit_area = slabs.area(direction.head_units);
     const auto [more_head, more_tail] =
-        own.empty() ? units_by_own_faces(direction, slab, tolerance, unit_area, head, tail)
+        own.empty() ? units_by_own_faces(direction, mesh, *measured, tolerance, unit_area, head, tail)
                     : units_by_own_parts(direction, mesh, *measured, own, tolerance, material_classes, unit_area, head, tail);
     head += more_head;
     tail += more_tail;

@@ -2,6 +2,7 @@
 // Units of a grid direction that lie beyond its cut planes: copies of the repeated unit near the
 // model's ends, where the symmetric area is eroded by r, so no cut plane may cross it.
 
+#include "geometry/flat_regions.h"
 #include "grammar/grid_rules.h"
 
 #include <cstdint>
@@ -26,10 +27,17 @@ struct MeshAlong {
   std::vector<double> part_areas;
   std::vector<std::pair<double, double>> part_spans;
   std::vector<std::pair<double, std::size_t>> parts_by_position;
+  /// Flat regions that do not lie across the direction (see flat_regions; their materials
+  /// replaced by their classes, 0 when materials are not matched), their spans along it, and
+  /// (lower end of the span, region), ascending.
+  std::vector<FlatRegion> flat_regions;
+  std::vector<std::pair<double, double>> region_spans;
+  std::vector<std::pair<double, std::size_t>> regions_by_start;
 };
 
-/// Measures `mesh` along the unit vector `direction` for count_end_units.
-MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction);
+/// Measures `mesh` along the unit vector `direction` for count_end_units; `material_classes` as
+/// count_end_units takes them.
+MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction, std::span<const std::uint32_t> material_classes = {});
 
 /// Extends `direction` (found on `mesh`, a triangle mesh) by the copies of the unit that lie before
 /// its first plane and after its last: while the slab one pitch before the first plane, moved by
@@ -50,11 +58,15 @@ MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction);
 /// but whose own parts are: every connected component lying wholly in the repeated unit's slab (at
 /// least 10 % of its surface) has a copy, the same surface within `tolerance`, moved by the
 /// motion's power to the slab (a colonnade's end columns, which stand under the ends of its beam
-/// and steps). Resizing to the new count still gives the exemplar (head and tail pieces are
+/// and steps); a unit with no such part (every part runs on across its planes) goes on by units
+/// whose own flat faces are copies: every flat region lying wholly in its slab and not across the
+/// direction (at least 10 % of its surface; a straight stair's top step, whose tread is a copy
+/// though the stair's end face lies in its slab). Resizing to the new count still gives the exemplar (head and tail pieces are
 /// unchanged), and each further unit adds one copy of the repeated unit. Materials are compared by
 /// `material_classes` (the class of each material index, as the symmetries matched them: random
 /// tints grouped as one); empty (materials not matched) compares the shapes alone. `measured`:
-/// measure_along(mesh, direction.direction), or null to measure here. Returns the units added.
+/// measure_along(mesh, direction.direction, material_classes), or null to measure here. Returns
+/// the units added.
 int count_end_units(GridDirection& direction, const TriangleMesh& mesh, double tolerance,
                     std::span<const std::uint32_t> material_classes, const MeshAlong* measured = nullptr);
 

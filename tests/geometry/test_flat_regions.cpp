@@ -91,6 +91,30 @@ TEST_CASE("flat regions: materials and sides stay apart", "[geometry][flat_regio
   CHECK(dg::flat_regions(sides, all(sides)).size() == 2);
 }
 
+TEST_CASE("flat regions: faces apart in one plane join only as coplanar, and a region moves with its mesh",
+          "[geometry][flat_regions]") {
+  dg::TriangleMesh mesh;
+  add_grid(mesh, 0.0, 0.0, 1.0, 1.0, 2, 2, 0.0);
+  add_grid(mesh, 1.0, 0.0, 1.0, 1.0, 1, 1, 0.0);  // shares two corners with the first
+  add_grid(mesh, 3.0, 0.0, 1.0, 1.0, 1, 1, 0.0);  // apart
+  CHECK(dg::flat_regions(mesh, all(mesh)).size() == 1);
+  const std::vector<dg::FlatRegion> joined = dg::flat_regions(mesh, all(mesh), dg::FlatJoin::sharing_corners);
+  REQUIRE(joined.size() == 2);
+  CHECK(joined[0].area == Approx(2.0));
+  CHECK(joined[1].area == Approx(1.0));
+  // The region moved is the region of the moved mesh; not where it was.
+  dg::RigidTransform motion;
+  motion.rotation = Eigen::AngleAxisd(0.5, Vec3(0, 1, 1).normalized()).toRotationMatrix();
+  motion.translation = Vec3(0.3, -2.0, 1.0);
+  dg::TriangleMesh moved_mesh = mesh;
+  for (Vec3& p : moved_mesh.positions) p = motion.apply(p);
+  const std::vector<dg::FlatRegion> moved = dg::flat_regions(moved_mesh, all(moved_mesh), dg::FlatJoin::sharing_corners);
+  REQUIRE(moved.size() == 2);
+  CHECK(dg::same_flat_region(dg::moved_region(joined[0], mesh, motion), moved[0], 1e-6));
+  CHECK_FALSE(dg::same_flat_region(joined[0], moved[0], 1e-6));
+  CHECK_FALSE(dg::same_flat_region(dg::moved_region(joined[0], mesh, motion), moved[1], 1e-6));
+}
+
 TEST_CASE("same_flat_region: one region however triangulated, not with a hole, moved or turned over", "[geometry][flat_regions]") {
   const double distance = 0.017;
   dg::TriangleMesh two;
