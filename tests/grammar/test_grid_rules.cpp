@@ -526,6 +526,14 @@ TEST_CASE("a straight stair with a baluster on every tread: a 1-grid with one un
     CHECK(dg::test::hausdorff_distance(dg::resize_grid(grids[0], pieces, {steps}, eps), straight_stair(steps)) < 1e-3 * eps);
     CHECK(dg::test::hausdorff_distance(dg::resize_grid(grids[0], pieces, {steps + 2}, eps), straight_stair(steps + 2)) < 1e-3 * eps);
   }
+  // Turned about a general axis: the tread, moved by the detected motion, still lands on the top one.
+  dg::Model turned;
+  turned.mesh = straight_stair(10);
+  dg::test::turn_generally(turned.mesh);
+  const std::vector<dg::GridRule> grids = grids_of(dg::prepare_model(std::move(turned)));
+  REQUIRE(grids.size() == 1);
+  REQUIRE(grids[0].directions.size() == 1);
+  CHECK(grids[0].directions[0].count == 10);
 }
 
 // The chairs hold every seed of the translation by the chair pitch; the top, apart from them,
