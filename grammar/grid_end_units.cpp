@@ -110,14 +110,13 @@ std::pair<int, int> units_by_own_parts(const GridDirection& direction, const Tri
 }
 
 // The flat regions of `along` lying wholly between the planes d . x = lo and hi (more than
-// `margin` from both), indices ascending.
+// `margin` from both).
 std::vector<std::size_t> regions_between(const MeshAlong& along, double lo, double hi, double margin) {
   std::vector<std::size_t> inside;
   auto it = std::upper_bound(along.regions_by_start.begin(), along.regions_by_start.end(),
                              std::make_pair(lo + margin, std::numeric_limits<std::size_t>::max()));
   for (; it != along.regions_by_start.end() && it->first < hi - margin; ++it)
     if (along.region_spans[it->second].second < hi - margin) inside.push_back(it->second);
-  std::sort(inside.begin(), inside.end());
   return inside;
 }
 

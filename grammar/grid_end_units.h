@@ -61,8 +61,9 @@ MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction, std::sp
 /// and steps); a unit with no such part (every part runs on across its planes) goes on by units
 /// whose own flat faces are copies: every flat region lying wholly in its slab and not across the
 /// direction (at least 10 % of its surface; a straight stair's top step, whose tread is a copy
-/// though the stair's end face lies in its slab). Resizing to the new count still gives the exemplar (head and tail pieces are
-/// unchanged), and each further unit adds one copy of the repeated unit. Materials are compared by
+/// though the stair's end face lies in its slab). Resizing to the new count still gives the
+/// exemplar (head and tail pieces are unchanged), and each further unit adds one copy of the
+/// repeated unit. Materials are compared by
 /// `material_classes` (the class of each material index, as the symmetries matched them: random
 /// tints grouped as one); empty (materials not matched) compares the shapes alone. `measured`:
 /// measure_along(mesh, direction.direction, material_classes), or null to measure here. Returns
