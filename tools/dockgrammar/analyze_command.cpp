@@ -106,7 +106,7 @@ void add_analyze_command(CLI::App& app) {
     grammar.r = prepared.surface.r();
     grammar.eps = prepared.surface.eps();
     grammar.origin = prepared.origin;
-    const UpAxisChoice up = symmetry_up_axis(options->model.model_path, options->up, symmetries);
+    const UpAxisChoice up = symmetry_up_axis(options->model.model_path, options->up, prepared.model, symmetries);
     grammar.up_axis = up.axis;
     grammar.exemplar = prepared.model.mesh;
     if (prepared.model.is_point_cloud()) grammar.exemplar_points = prepared.model.cloud;
@@ -127,7 +127,7 @@ void add_analyze_command(CLI::App& app) {
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
-                          folder / (stem + ".report.md"), {}, hint, materials, up.turn};
+                          folder / (stem + ".report.md"), {}, hint, materials, up.turn, up.one_sided};
     write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)

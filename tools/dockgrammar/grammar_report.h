@@ -1,6 +1,7 @@
 #pragma once
 // What `analyze` tells the user: text summary, JSON summary, Markdown report and pictures.
 
+#include "geometry/one_sided_axis.h"
 #include "geometry/prepared_model.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
@@ -32,6 +33,7 @@ struct AnalysisReport {
   std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
   std::optional<MaterialHint> material_hint;    ///< material matching that gives grids (grammar/material_hint.h), applied or not
   std::optional<TurnAxis> up_from_turn;         ///< the turn grammar.up_axis was read from (no --up, not glTF)
+  std::optional<AxisFacing> up_from_facing;     ///< else how the surface faces along it (a scan seen from above)
 };
 
 /// Short readable summary for stdout.

@@ -21,11 +21,14 @@ std::string model_up_axis(const std::string& model_path, const std::string& give
   return extension == ".gltf" || extension == ".glb" ? "y" : "";
 }
 
-UpAxisChoice symmetry_up_axis(const std::string& model_path, const std::string& given, const SymmetryResult& symmetries) {
-  if (std::string axis = model_up_axis(model_path, given); !axis.empty()) return {std::move(axis), std::nullopt};
-  const std::optional<TurnAxis> turn = coordinate_turn_axis(symmetries);
-  if (!turn) return {};
-  return {std::string(1, "xyz"[turn->axis]), turn};
+UpAxisChoice symmetry_up_axis(const std::string& model_path, const std::string& given, const Model& model,
+                              const SymmetryResult& symmetries) {
+  if (std::string axis = model_up_axis(model_path, given); !axis.empty()) return {.axis = std::move(axis)};
+  if (const std::optional<TurnAxis> turn = coordinate_turn_axis(symmetries))
+    return {.axis = std::string(1, "xyz"[turn->axis]), .turn = turn};
+  if (const std::optional<AxisFacing> facing = one_sided_up_axis(model))
+    return {.axis = std::string(1, "xyz"[facing->axis]), .one_sided = facing};
+  return {};
 }
 
 MeshRenderOptions picture_options(const BoundingBox& bounds, const std::string& axis) {

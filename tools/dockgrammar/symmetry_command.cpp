@@ -37,7 +37,7 @@ void add_symmetry_command(CLI::App& app) {
     const SymmetryResult result = detect_symmetries(prepared, symmetry_options(options->search), progress);
     if (!options->output.empty())
       write_symmetry_pictures(options->output, prepared, result, options->top,
-                              symmetry_up_axis(options->model.model_path, options->up, result).axis);
+                              symmetry_up_axis(options->model.model_path, options->up, prepared.model, result).axis);
     if (options->model.json) {
       nlohmann::json out = symmetry_json(result, options->top, prepared.origin);
       out["model"] = prepared.model.source_path;
