@@ -139,28 +139,29 @@ std::vector<FlatRegion> flat_regions(const TriangleMesh& mesh, const std::vector
     const Vec3 normal = f.area_vector.normalized();
     return !f.outline.empty() && on_plane(mesh, g.outline, mesh.positions[f.outline.front().first], normal, tolerance);
   };
-  // Corners of each face's outline, ascending (for FlatJoin::sharing_corners).
-  std::vector<std::vector<std::uint32_t>> corners(join == FlatJoin::sharing_corners ? faces.size() : 0);
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    for (const Edge& e : faces[i].outline) corners[i].insert(corners[i].end(), {e.first, e.second});
-    std::sort(corners[i].begin(), corners[i].end());
-    corners[i].erase(std::unique(corners[i].begin(), corners[i].end()), corners[i].end());
-  }
-  auto joined = [&](std::uint32_t i, std::uint32_t j) {
-    if (join == FlatJoin::coplanar) return true;
-    std::size_t a = 0, b = 0;
-    while (a < corners[i].size() && b < corners[j].size()) {
-      if (corners[i][a] == corners[j][b]) return true;
-      corners[i][a] < corners[j][b] ? ++a : ++b;
-    }
-    return false;
+  auto join_if_one = [&](std::uint32_t i, std::uint32_t j) {
+    if (find_root(region, i) != find_root(region, j) && material(faces[i]) == material(faces[j]) &&
+        faces[i].area_vector.dot(faces[j].area_vector) > 0.0 && coplanar(faces[i], faces[j]) && coplanar(faces[j], faces[i]))
+      region[find_root(region, j)] = find_root(region, i);
   };
-  for (std::uint32_t i = 0; i < faces.size(); ++i)
-    for (std::uint32_t j = i + 1; j < faces.size(); ++j)
-      if (find_root(region, i) != find_root(region, j) && material(faces[i]) == material(faces[j]) &&
-          faces[i].area_vector.dot(faces[j].area_vector) > 0.0 && joined(i, j) && coplanar(faces[i], faces[j]) &&
-          coplanar(faces[j], faces[i]))
-        region[find_root(region, j)] = find_root(region, i);
+  if (join == FlatJoin::coplanar) {
+    for (std::uint32_t i = 0; i < faces.size(); ++i)
+      for (std::uint32_t j = i + 1; j < faces.size(); ++j) join_if_one(i, j);
+  } else {
+    // Only faces with a corner of their outlines in common may join: the pairs around each corner.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> at_corner;  // (corner, face)
+    for (std::uint32_t i = 0; i < faces.size(); ++i)
+      for (const Edge& e : faces[i].outline) at_corner.insert(at_corner.end(), {{e.first, i}, {e.second, i}});
+    std::sort(at_corner.begin(), at_corner.end());
+    at_corner.erase(std::unique(at_corner.begin(), at_corner.end()), at_corner.end());
+    for (std::size_t begin = 0; begin < at_corner.size();) {
+      std::size_t end = begin + 1;
+      while (end < at_corner.size() && at_corner[end].first == at_corner[begin].first) ++end;
+      for (std::size_t a = begin; a < end; ++a)
+        for (std::size_t b = a + 1; b < end; ++b) join_if_one(at_corner[a].second, at_corner[b].second);
+      begin = end;
+    }
+  }
   std::vector<FlatRegion> regions;
   std::vector<std::uint32_t> region_slot(faces.size(), kNone);
   std::vector<std::vector<Edge>> edges;
