@@ -613,9 +613,9 @@ void write_analysis_report(const AnalysisReport& report) {
                       100.0 * turn->fraction);
   } else if (const std::optional<AxisFacing>& facing = report.up_from_facing) {
     const char* surface = prepared.model.is_point_cloud() ? "points face" : "surface area faces";
-    md += fmt::format("Up axis {0}: {1:.1f} % of the {2} +{0} and {3:.2f} % -{0}, as in a scan seen from above "
-                      "(nothing seen from below). Pictures stand the model on it and generate keeps pieces upright about "
-                      "it (`--up` sets another).\n\n",
+    md += fmt::format("Up axis {0}: {1:.1f} % of the {2} +{0} and {3:.2f} % -{0}, as in a scan seen from above or "
+                      "a model without floors or undersides. Pictures stand the model on it and generate keeps pieces "
+                      "upright about it (`--up` sets another).\n\n",
                       report.grammar.up_axis, 100.0 * facing->up, surface, 100.0 * facing->down);
   }
   md += materials_paragraph(prepared);
