@@ -56,11 +56,11 @@ MeshAlong measure_along(const TriangleMesh& mesh, const Vec3& direction, std::sp
 /// join into it). Without a split unit, and when the unit repeats as a whole slab at least once
 /// (two units counted so far), the count then goes on outward by units whose slabs are no copies
 /// but whose own parts are: every connected component lying wholly in the repeated unit's slab (at
-/// least 5 % of its surface) has a copy, the same surface within `tolerance`, moved by the
+/// least 7 % of its surface) has a copy, the same surface within `tolerance`, moved by the
 /// motion's power to the slab (a colonnade's end columns, which stand under the ends of its beam
 /// and steps); a unit with no such part (every part runs on across its planes) goes on by units
 /// whose own flat faces are copies: every flat region lying wholly in its slab and not across the
-/// direction (at least 5 % of its surface; a straight stair's top step, whose tread is a copy
+/// direction (at least 7 % of its surface; a straight stair's top step, whose tread is a copy
 /// though the stair's end face lies in its slab). Resizing to the new count still gives the
 /// exemplar (head and tail pieces are unchanged), and each further unit adds one copy of the
 /// repeated unit. Materials are compared by

@@ -3,8 +3,8 @@
 
 #include "geometry/image.h"
 #include "geometry/mesh.h"
-#include "geometry/one_sided_axis.h"
 #include "geometry/model_io.h"
+#include "geometry/one_sided_axis.h"
 #include "geometry/voxel_surface.h"
 #include "geometry/render_mesh.h"
 #include "symmetry/turn_axis.h"
