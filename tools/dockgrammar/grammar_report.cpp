@@ -179,8 +179,9 @@ std::string whole_parts_note(const GridDirection& d, const TriangleMesh& mesh) {
 
 // A grid direction's generator in the model file's coordinates: "t = ..." for a translation,
 // the screw's angle, axis and rise.
-std::string grid_motion_text(const GridDirection& d, const Vec3& origin) {
-  return describe_motion(shifted_motion(d.motion, origin), d.motion.angle() > 1e-9 ? "screw" : "translation");
+std::string grid_motion_text(const GridDirection& d, const PreparedModel& prepared) {
+  return describe_motion(shifted_motion(d.motion, prepared.origin), d.motion.angle() > 1e-9 ? "screw" : "translation",
+                         prepared.surface.eps());
 }
 
 // Offset of a direction's first cut plane along its direction in the model file's coordinates.
@@ -215,12 +216,8 @@ std::string further_run_text(const AnalysisReport& report, std::size_t grid_inde
                      first.name, first_cut(d, origin), first_cut(d, origin) + d.count * d.pitch);
 }
 
-// Components with 6 significant digits; rounding noise (below 1e-9 of the length) and -0 show as 0.
-std::string vec(const Vec3& v) {
-  const double noise = 1e-9 * v.norm();
-  auto clean = [&](double x) { return std::abs(x) <= noise ? 0.0 : x; };
-  return fmt::format("({:.6g}, {:.6g}, {:.6g})", clean(v.x()), clean(v.y()), clean(v.z()));
-}
+// Components with 6 significant digits (more for survey coordinates).
+std::string vec(const Vec3& v) { return fitted_vector_text(v, 6); }
 
 // Every stage's time in pipeline order: preparation, symmetry detection, grammar.
 std::vector<StageTiming> stage_timings(const AnalysisReport& report) {
@@ -487,7 +484,7 @@ std::string analysis_text(const AnalysisReport& report) {
     if (const std::string further = further_run_text(report, g); !further.empty()) out += fmt::format("  a further run {}\n", further);
     for (const GridDirection& d : grid.rule.directions)
       out += fmt::format("  direction {}: cut planes across {} every {:.6g}, {} unit{}, first cut at {:.6g}{}{}\n",
-                         grid_motion_text(d, report.prepared.origin), vec(d.direction), d.pitch, d.count,
+                         grid_motion_text(d, report.prepared), vec(d.direction), d.pitch, d.count,
                          d.count == 1 ? "" : "s", first_cut(d, report.prepared.origin),
                          kept_units_text(d), whole_parts_note(d, report.prepared.model.mesh));
   }
@@ -621,7 +618,7 @@ void write_analysis_report(const AnalysisReport& report) {
   md += materials_paragraph(prepared);
   if (const std::string moved = origin_text(prepared); !moved.empty()) md += moved + "\n\n";
   md += "## Symmetries\n\nOrdered by r-symmetric area; families group a motion with its powers.\n\n```\n";
-  md += symmetry_table(report.symmetries, 20, report.prepared.origin);
+  md += symmetry_table(report.symmetries, 20, report.prepared);
   md += "```\n\n";
   if (const std::string unverified = unverified_candidates_text(report.symmetries); !unverified.empty()) md += unverified + "\n";
   md += "## Grid rules\n\n";
@@ -645,7 +642,7 @@ void write_analysis_report(const AnalysisReport& report) {
     md += "| direction | motion | pitch | units | first cut | repeated unit |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < grid.rule.directions.size(); ++i) {
       const GridDirection& d = grid.rule.directions[i];
-      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d, report.prepared.origin),
+      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {}{} |\n", i + 1, grid_motion_text(d, report.prepared),
                         d.pitch, d.count, first_cut(d, report.prepared.origin),
                         d.head_units + 1, kept_units_text(d));
     }

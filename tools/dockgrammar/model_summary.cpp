@@ -42,6 +42,12 @@ std::string coordinates_text(const Vec3& v, int digits) {
   return fmt::format("({}, {}, {})", text(v.x()), text(v.y()), text(v.z()));
 }
 
+std::string fitted_vector_text(const Vec3& v, int digits, double noise) {
+  const double zero = std::max(noise, 1e-6 * v.norm());
+  auto clean = [&](double x) { return std::abs(x) <= zero ? 0.0 : x; };
+  return coordinates_text(Vec3(clean(v.x()), clean(v.y()), clean(v.z())), digits);
+}
+
 nlohmann::json coordinates_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 std::string origin_text(const PreparedModel& prepared) {

@@ -22,6 +22,11 @@ nlohmann::json summary_json(const PreparedModel& prepared);
 /// (survey coordinates keep three places more than their whole digits: 412351.67, 5678901.23).
 std::string coordinates_text(const Vec3& v, int digits);
 
+/// coordinates_text of a fitted direction, motion or point: components within `noise` (model
+/// units) or 1e-6 of the vector's length of 0 (the detector's rounding noise, far under the
+/// digits shown) and -0 show as 0.
+std::string fitted_vector_text(const Vec3& v, int digits, double noise = 0.0);
+
 /// [x, y, z] as JSON.
 nlohmann::json coordinates_json(const Vec3& v);
 

@@ -51,7 +51,7 @@ void add_symmetry_command(CLI::App& app) {
       const std::string moved = origin_text(prepared);
       fmt::print("model {}: r = {:.6g}, eps = {:.6g}\n{}\n{}", prepared.model.source_path, prepared.surface.r(),
                  prepared.surface.eps(), moved.empty() ? "" : "origin: " + moved + "\n",
-                 symmetry_table(result, options->top, prepared.origin));
+                 symmetry_table(result, options->top, prepared));
       if (const std::string unverified = unverified_candidates_text(result); !unverified.empty()) fmt::print("\n{}", unverified);
     }
   });

@@ -16,20 +16,17 @@ namespace {
 
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
-// Components printed with 5 significant digits (more for survey coordinates, see
-// coordinates_text); rounding noise (below 1e-9 of the vector's length) and -0 show as 0.
-std::string vec(const Vec3& v) {
-  const double noise = 1e-9 * v.norm();
-  auto clean = [&](double x) { return std::abs(x) <= noise ? 0.0 : x; };
-  return coordinates_text(Vec3(clean(v.x()), clean(v.y()), clean(v.z())), 5);
-}
+// Components printed with 5 significant digits (more for survey coordinates).
+std::string vec(const Vec3& v, double noise) { return fitted_vector_text(v, 5, noise); }
 
 }  // namespace
 
-std::string describe_motion(const RigidTransform& t, const std::string& kind) {
-  if (kind == "translation") return fmt::format("t = {}, |t| = {:.6g}", vec(t.translation), t.translation.norm());
+std::string describe_motion(const RigidTransform& t, const std::string& kind, double eps) {
+  const double noise = 1e-6 * eps;
+  if (kind == "translation") return fmt::format("t = {}, |t| = {:.6g}", vec(t.translation, noise), t.translation.norm());
   const ScrewParameters screw = screw_parameters(t);
-  std::string text = fmt::format("{:.3f} deg about {} through {}", degrees(screw.angle), vec(screw.axis), vec(screw.axis_point));
+  std::string text = fmt::format("{:.3f} deg about {} through {}", degrees(screw.angle), vec(screw.axis, 0.0),
+                                 vec(screw.axis_point, noise));
   if (kind == "screw") text += fmt::format(", rise {:.6g}", screw.slide);
   return text;
 }
@@ -41,7 +38,9 @@ nlohmann::json matrix_json(const RigidTransform& t) {
   return rows;
 }
 
-std::string symmetry_table(const SymmetryResult& result, std::size_t top, const Vec3& origin) {
+std::string symmetry_table(const SymmetryResult& result, std::size_t top, const PreparedModel& prepared) {
+  const Vec3& origin = prepared.origin;
+  const double eps = prepared.surface.eps();
   if (result.symmetries.empty()) return fmt::format("no symmetries found: {}\n", result.note);
   std::string out = fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", "#", "kind", "symmetric area",
                                 "r-symmetric area", "family", "motion");
@@ -50,7 +49,7 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top, const 
     out += fmt::format("{:>3}  {:<11}  {:<22}  {:<22}  {:<10}  {}\n", i + 1, s.kind,
                        fmt::format("{:.4g} ({:.1f}%)", s.symmetric_area, 100.0 * s.symmetric_fraction),
                        fmt::format("{:.4g} ({:.1f}%)", s.r_symmetric_area, 100.0 * s.r_symmetric_fraction),
-                       fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(shifted_motion(s.transform, origin), s.kind));
+                       fmt::format("F{} ^{}", s.family + 1, s.power), describe_motion(shifted_motion(s.transform, origin), s.kind, eps));
   }
   out += "\nfamilies of the symmetries above (generator, repeats found):\n";
   std::vector<bool> shown(result.families.size(), false);
@@ -64,7 +63,7 @@ std::string symmetry_table(const SymmetryResult& result, std::size_t top, const 
     const SymmetryFamily& family = result.families[f];
     out += fmt::format("  F{:<3} {:<11} x{:<3}{}  {}\n", f + 1, family.kind, family.count,
                        family.order > 0 ? fmt::format(" (order {})", family.order) : std::string(),
-                       describe_motion(shifted_motion(family.generator, origin), family.kind));
+                       describe_motion(shifted_motion(family.generator, origin), family.kind, eps));
   }
   return out;
 }

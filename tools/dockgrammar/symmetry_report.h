@@ -12,15 +12,16 @@
 namespace dg::cli {
 
 /// "t = (x, y, z), |t| = ..." for a translation; angle (degrees), axis and axis point for a
-/// rotation, plus the rise along the axis for a screw (`kind` as in DetectedSymmetry).
-std::string describe_motion(const RigidTransform& t, const std::string& kind);
+/// rotation, plus the rise along the axis for a screw (`kind` as in DetectedSymmetry). Lengths
+/// within 1e-6 `eps` (the voxel size, model units) of 0 print as 0.
+std::string describe_motion(const RigidTransform& t, const std::string& kind, double eps);
 
 /// A rigid motion as a 4x4 row-major matrix (rows of four numbers), model units.
 nlohmann::json matrix_json(const RigidTransform& t);
 
 /// Readable table of the first `top` symmetries (kind, motion, areas, family), motions in the
-/// model file's coordinates (`origin`: PreparedModel::origin).
-std::string symmetry_table(const SymmetryResult& result, std::size_t top, const Vec3& origin);
+/// model file's coordinates (PreparedModel::origin), lengths as describe_motion prints them.
+std::string symmetry_table(const SymmetryResult& result, std::size_t top, const PreparedModel& prepared);
 
 /// One sentence saying how many candidates went unverified and that --candidates verifies more
 /// (ends with a newline); empty when every candidate was verified.
