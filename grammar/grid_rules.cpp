@@ -181,6 +181,48 @@ std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const Symm
   return best;
 }
 
+// Larger powers of a direction's generator tried for a grid of grouped units.
+constexpr std::size_t kGroupingPowersTried = 4;
+
+// Whether `grouped`, a direction of the `factor`-th power of `direction`'s generator, repeats
+// where `direction` keeps most of its units once: those repeat over fewer than half of its
+// units, and the grouped units repeat over at least twice as many of the generator's pitches.
+bool groups_kept_units(const GridDirection& direction, const GridDirection& grouped, int factor) {
+  const int repeated = direction.count - min_units(direction);
+  const int grouped_repeated = factor * (grouped.count - min_units(grouped));
+  return 2 * repeated < direction.count && grouped.count >= 2 && grouped_repeated >= 2 * repeated;
+}
+
+// A direction of grid1 whose units differ every few units (a pilaster after every third window
+// column keeps all but the columns between two pilasters once) grouped into units of a larger
+// power of its generator that are all copies (bays of three columns and a pilaster), with that
+// power (of the first kGroupingPowersTried larger powers of the family that do so, the one whose
+// units repeat over the most of the generator's pitches; the smaller power on a tie).
+std::optional<std::pair<GridDirection, int>> grouped_direction(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                                               const GridDirection& direction, const DirectionSearch& search) {
+  if (!direction.whole_in_head.empty() || !direction.whole_in_tail.empty() || 2 * (direction.count - min_units(direction)) >= direction.count)
+    return std::nullopt;
+  const SymmetryFamily& family = symmetries.families[symmetries.symmetries[direction.symmetry].family];
+  if (family.kind != "translation") return std::nullopt;
+  const auto own = std::find(family.members.begin(), family.members.end(), direction.symmetry);
+  if (own == family.members.end()) return std::nullopt;
+  const int power = std::abs(family.powers[static_cast<std::size_t>(own - family.members.begin())]);
+  std::optional<std::pair<GridDirection, int>> best;
+  auto repeated_pitches = [](const std::pair<GridDirection, int>& g) { return g.second * (g.first.count - min_units(g.first)); };
+  std::size_t tried = 0;
+  for (std::size_t m : members_by_power(family)) {
+    const int larger = std::abs(family.powers[m]);
+    if (larger <= power || larger % power != 0) continue;
+    if (tried++ == kGroupingPowersTried) break;
+    const std::size_t member = family.members[m];
+    std::optional<GridDirection> grouped = grid_direction(prepared, symmetries.symmetries[member], member, search);
+    if (!grouped || !groups_kept_units(direction, *grouped, larger / power)) continue;
+    std::pair<GridDirection, int> candidate{std::move(*grouped), larger / power};
+    if (!best || repeated_pitches(candidate) > repeated_pitches(*best)) best = std::move(candidate);
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
@@ -302,6 +344,18 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
         grids.push_back(std::move(further_grid));
       }
     }
+  }
+  // Grid1's directions whose units differ every few units give grids of their own with grouped
+  // units in that direction, the other directions as in grid1 (resizing adds whole bays).
+  if (!grids.empty() && !prepared.model.is_point_cloud()) {
+    const GridRule first = grids[0];
+    for (std::size_t i = 0; i < first.directions.size(); ++i)
+      if (auto grouped = grouped_direction(prepared, symmetries, first.directions[i], search)) {
+        GridRule grouped_grid = next_grid();
+        grouped_grid.directions = first.directions;
+        grouped_grid.directions[i] = std::move(grouped->first);
+        grids.push_back(std::move(grouped_grid));
+      }
   }
   report_progress(progress, "grid rules", 1.0);
   return grids;

@@ -113,7 +113,12 @@ inline bool short_run(double spanned, std::size_t repeats) { return 2.0 * spanne
 /// direction of grid1 with min_repeats units (planes at least half a pitch clear of the runs
 /// before, what lies between it and its neighbouring runs mostly outside the symmetric region,
 /// such as a gate between two stretches of fence) gives a 1-grid of its own, after the screws'
-/// grids, up to three per direction; a point cloud gets none. Families are examined
+/// grids, up to three per direction; a point cloud gets none. A direction of grid1 that keeps
+/// most of its units once, because the model changes every few units (a pilaster after every
+/// third window column), gives a last grid with grid1's other directions and, in its place, the
+/// direction of a larger power of its generator whose units repeat (bays of three columns; of
+/// the first four larger powers that repeat over at least twice as many of the generator's
+/// pitches, the one that repeats over the most); a point cloud gets none. Families are examined
 /// in parallel; the result does not depend on the thread count. `progress` hears stage "grid
 /// rules" with the fraction of repetition families examined (after each parallel batch), then 1.
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,

@@ -996,3 +996,37 @@ TEST_CASE("corpus: the Hochhaus Asemwald gives a 2-grid of floors and bays when 
   // fit one bay (the report says so); resizing adds bays there.
   CHECK(bays->count == 1);
 }
+
+// Grid1 counts the 9 window columns, but keeps all but those between two pilasters once (the
+// pilasters break the copies every third column); the grid of bays repeats, and resizing it
+// adds whole bays (before, only grid1 was built, and resizing it added windows between two
+// pilasters).
+TEST_CASE("a facade with a pilaster every third window column also gives a grid of bays", "[grammar][grid]") {
+  dg::Model model;
+  model.mesh = dg::test::pilaster_facade(9, 2);
+  const dg::PreparedModel prepared = dg::prepare_model(std::move(model));
+  const std::vector<dg::GridRule> grids = grids_of(prepared);
+  REQUIRE(grids.size() == 2);
+  const dg::GridDirection* columns = direction_along(grids[0], Vec3(1.5, 0, 0));
+  REQUIRE(columns != nullptr);
+  CHECK(columns->count == 9);
+  CHECK(dg::min_units(*columns) > 4);
+  const dg::GridRule& bays = grids[1];
+  REQUIRE(bays.directions.size() == grids[0].directions.size());
+  const dg::GridDirection* bay = direction_along(bays, Vec3(4.5, 0, 0));
+  REQUIRE(bay != nullptr);
+  CHECK(bay->count == 3);
+  const dg::GridDirection* storeys = direction_along(bays, Vec3(0, 3, 0));
+  REQUIRE(storeys != nullptr);
+  CHECK(storeys->count == 2);
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, bays, prepared.surface.eps());
+  const auto bay_index = static_cast<std::size_t>(bay - bays.directions.data());
+  const auto storey_index = static_cast<std::size_t>(storeys - bays.directions.data());
+  for (const auto& [bay_count, storey_count] : {std::pair{4, 2}, std::pair{2, 3}, std::pair{3, 2}}) {
+    std::vector<int> counts(2);
+    counts[bay_index] = bay_count;
+    counts[storey_index] = storey_count;
+    const dg::TriangleMesh resized = dg::resize_grid(bays, pieces, counts, prepared.surface.eps());
+    CHECK(dg::test::hausdorff_distance(resized, dg::test::pilaster_facade(3 * bay_count, storey_count)) < 1e-3 * prepared.surface.eps());
+  }
+}

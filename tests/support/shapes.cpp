@@ -105,4 +105,14 @@ void turn_generally(TriangleMesh& mesh) {
   for (Vec3& p : mesh.positions) p = rotation * p;
 }
 
+TriangleMesh pilaster_facade(int columns, int storeys) {
+  const double height = 3.0 * storeys;
+  TriangleMesh mesh = make_box(Vec3(0, 0, 0), Vec3(1.5 * columns + 0.3, height, 0.3));
+  for (int c = 0; c < columns; ++c)
+    for (int s = 0; s < storeys; ++s)
+      append(mesh, make_box(Vec3(0.5 + 1.5 * c, 1 + 3.0 * s, 0.3), Vec3(1.3 + 1.5 * c, 2.2 + 3.0 * s, 0.4)));
+  for (int k = 0; k <= columns / 3; ++k) append(mesh, make_box(Vec3(4.5 * k, 0, 0.3), Vec3(4.5 * k + 0.3, height, 0.5)));
+  return mesh;
+}
+
 }  // namespace dg::test

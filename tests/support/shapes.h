@@ -37,4 +37,9 @@ Eigen::Matrix3d general_rotation();
 /// Turns every vertex of `mesh` by general_rotation() about the origin.
 void turn_generally(TriangleMesh& mesh);
 
+/// A wall (x along its width, y up, 0.3 thick) with `columns` window boxes per storey, 1.5
+/// apart, `storeys` storeys 3 high, and a pilaster (0.3 wide, 0.2 deep, full height) before every
+/// third window column and after the last: bays of three windows, 4.5 wide. Touching boxes.
+TriangleMesh pilaster_facade(int columns, int storeys);
+
 }  // namespace dg::test

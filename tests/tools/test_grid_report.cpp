@@ -89,6 +89,26 @@ TEST_CASE("analyze: a further run of a grid's motion says so, with where both ru
   CHECK(grids[1]["further_run_of"] == nlohmann::json({{"grid", "grid1"}, {"direction", 1}}));
 }
 
+TEST_CASE("analyze: a grid of bays says whose units it groups, in the summary, the report and --json", "[tools][grids]") {
+  const std::filesystem::path folder = dg::test::fresh_folder("dockgrammar-grid-report-bays");
+  dg::write_mesh(folder / "bays.obj", dg::test::pilaster_facade(9, 2));
+  const dg::test::CliRun text = dg::test::run_cli("analyze " + (folder / "bays.obj").string() + " -q -o " + folder.string(), folder);
+  INFO(text.output);
+  REQUIRE(text.status == 0);
+  CHECK(text.output.find("grid grid2: 2-grid, counts 3x2 (resize with --grid grid2=3x2)\n  it groups the units of grid1's "
+                         "direction 1 by 3: grid1 keeps") != std::string::npos);
+  std::ifstream in(folder / "bays.report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(report.find("### grid2 (2-grid, counts 3x2)\n\nIt groups the units of grid1's direction 1 by 3") != std::string::npos);
+  const dg::test::CliRun json =
+      dg::test::run_cli("analyze " + (folder / "bays.obj").string() + " -q --json -o " + folder.string(), folder);
+  REQUIRE(json.status == 0);
+  const nlohmann::json grids = nlohmann::json::parse(json.output)["grids"];
+  REQUIRE(grids.size() == 2);
+  CHECK(grids[0]["groups_units_of"].is_null());
+  CHECK(grids[1]["groups_units_of"] == nlohmann::json({{"grid", "grid1"}, {"direction", 1}, {"factor", 3}}));
+}
+
 TEST_CASE("analyze: a grid over a short stretch of a translation's repeats is named as not built for the rest",
           "[tools][grids]") {
   // 16 posts 2 apart standing on one bar, whose top rises as a ramp under the first 10 (x = 3 ..

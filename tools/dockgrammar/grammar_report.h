@@ -43,7 +43,8 @@ std::string analysis_text(const AnalysisReport& report);
 /// {same_material: [[names]] (empty: --match-materials alone), grid_counts, applied: analyze went
 /// on with them}), symmetries, families,
 /// docking_sites, dockers, operations, nonterminals, productions, grids: [{name, dims, counts,
-/// transforms, count_range, further_run_of (null, or {grid, direction} whose motion it shares), pieces}], grammar_file, timings_s, missing (what this model shows that
+/// transforms, count_range, further_run_of (null, or {grid, direction} whose motion it shares),
+/// groups_units_of (null, or {grid, direction, factor} whose units it groups by factor), pieces}], grammar_file, timings_s, missing (what this model shows that
 /// analyze could not turn into rules, one sentence each, see not_built_items)}.
 nlohmann::json analysis_json(const AnalysisReport& report);
 
