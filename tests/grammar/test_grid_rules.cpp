@@ -1030,3 +1030,49 @@ TEST_CASE("a facade with a pilaster every third window column also gives a grid 
     CHECK(dg::test::hausdorff_distance(resized, dg::test::pilaster_facade(3 * bay_count, storey_count)) < 1e-3 * prepared.surface.eps());
   }
 }
+
+TEST_CASE("corpus: the Blendswap pallet also gives a grid of its deck boards grouped by its bottom boards",
+          "[grammar][grid][corpus]") {
+  const std::optional<std::filesystem::path> pallet = dg::test::corpus_file_if_present("meshes/furn-blendswap-pallet/pallet.obj");
+  if (!pallet) return;
+  const dg::PreparedModel prepared = dg::prepare_model(*pallet);
+  // Ground truth from the mesh: deck boards are the parts reaching its top, bottom boards those
+  // reaching its bottom, both across x and one pitch deep along z.
+  auto boards = [](const dg::TriangleMesh& mesh, bool deck) {
+    const dg::BoundingBox all = mesh.bounds();
+    std::vector<double> z;
+    for (const dg::BoundingBox& b : component_boxes(mesh))
+      if (b.size().x() > 0.9 * all.size().x() && (deck ? b.max.y() > all.max.y() - 1e-3 : b.min.y() < all.min.y() + 1e-3))
+        z.push_back(b.min.z());
+    std::sort(z.begin(), z.end());
+    return z;
+  };
+  const std::vector<double> deck = boards(prepared.model.mesh, true), bottom = boards(prepared.model.mesh, false);
+  REQUIRE(deck.size() == 7);
+  REQUIRE(bottom.size() == 3);
+  const double pitch = deck[1] - deck[0];
+  CHECK(bottom[1] - bottom[0] == Approx(3 * pitch).margin(1e-3));  // a bottom board under every third deck board
+
+  const std::vector<dg::GridRule> grids = dg::find_grids(prepared, dg::detect_symmetries(prepared));
+  REQUIRE(grids.size() == 2);
+  // The direction of `grid` along z with pitch `along` (the file's pitches carry float rounding).
+  auto along_z = [](const dg::GridRule& grid, double along) -> const dg::GridDirection* {
+    for (const dg::GridDirection& d : grid.directions)
+      if (std::abs(d.direction.z()) > 0.999 && std::abs(d.pitch - along) < 1e-3) return &d;
+    return nullptr;
+  };
+  const dg::GridDirection* boards_along = along_z(grids[0], pitch);
+  REQUIRE(boards_along != nullptr);
+  CHECK(boards_along->count == 7);
+  const dg::GridRule& grouped = grids[1];
+  const dg::GridDirection* bays = along_z(grouped, 3 * pitch);
+  REQUIRE(bays != nullptr);
+  CHECK(bays->count == 2);
+  // One bay more: three more deck boards and one more bottom board.
+  std::vector<int> counts = dg::exemplar_counts(grouped);
+  counts[static_cast<std::size_t>(bays - grouped.directions.data())] = 3;
+  const std::vector<dg::GridPiece> pieces = dg::cut_grid_pieces(prepared.model.mesh, grouped, prepared.surface.eps());
+  const dg::TriangleMesh longer = dg::resize_grid(grouped, pieces, counts, prepared.surface.eps());
+  CHECK(boards(longer, true).size() == 10);
+  CHECK(boards(longer, false).size() == 4);
+}
