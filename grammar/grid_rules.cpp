@@ -225,6 +225,22 @@ std::optional<std::pair<GridDirection, int>> grouped_direction(const PreparedMod
 
 }  // namespace
 
+std::optional<GroupedUnits> grouped_units(const GridRule& grid, const GridRule& other) {
+  if (grid.directions.size() != other.directions.size()) return std::nullopt;
+  std::optional<GroupedUnits> grouped;
+  for (std::size_t i = 0; i < grid.directions.size(); ++i) {
+    const GridDirection &own = grid.directions[i], &theirs = other.directions[i];
+    const double close = 1e-6 * theirs.pitch;
+    if (own.motion.angle() > 1e-9 || theirs.motion.angle() > 1e-9) return std::nullopt;  // screws
+    if ((own.translation - theirs.translation).norm() <= close) continue;
+    const long factor = std::lround(own.pitch / theirs.pitch);
+    if (grouped || factor < 2 || (own.translation - static_cast<double>(factor) * theirs.translation).norm() > close)
+      return std::nullopt;
+    grouped = GroupedUnits{i, static_cast<int>(factor)};
+  }
+  return grouped;
+}
+
 std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryResult& symmetries,
                                  const GridOptions& options, const ProgressCallback& progress) {
   std::vector<GridRule> grids;

@@ -20,6 +20,7 @@
 #include "symmetry/symmetry_detection.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,17 @@ inline std::vector<int> exemplar_counts(const GridRule& grid) {
 inline int lowest_count(const GridRule& grid, std::size_t i) {
   return std::max(grid.min_count, min_units(grid.directions[i]));
 }
+
+/// How a grid groups the units of another along one direction (find_grids' grid of bays beside
+/// grid1's window columns): the direction and how many of the other's units make one.
+struct GroupedUnits {
+  std::size_t direction = 0;
+  int factor = 0;
+};
+
+/// Whether `grid` groups the units of `other`: both have the same directions but one, whose
+/// translation is a whole multiple (2 or more) of `other`'s there (within 1e-6 of its pitch).
+std::optional<GroupedUnits> grouped_units(const GridRule& grid, const GridRule& other);
 
 /// Whether grids spanning `spanned` repeats of a translation family's generator cover fewer than
 /// half of its `repeats` (SymmetryFamily::count): a short run of it.

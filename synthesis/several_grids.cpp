@@ -152,6 +152,13 @@ std::vector<GridResize> resize_order(const ShapeGrammar& grammar, std::vector<Gr
     throw InputError(fmt::format("grids {} and {} both keep separate parts whole: resize one, analyze the result, then "
                                  "resize the other",
                                  grammar.grids[changing[0].grid].rule.name, grammar.grids[changing[1].grid].rule.name));
+  for (const GridResize& a : changing)
+    for (const GridResize& b : changing)
+      if (const std::optional<GroupedUnits> grouped = grouped_units(grammar.grids[a.grid].rule, grammar.grids[b.grid].rule))
+        throw InputError(fmt::format("{} groups the units of {} ({} of them along direction {} make one): they are "
+                                     "two ways to resize the same part of the model; resize one of them",
+                                     grammar.grids[a.grid].rule.name, grammar.grids[b.grid].rule.name, grouped->factor,
+                                     grouped->direction + 1));
   return feasible_order(grammar, std::move(changing));
 }
 

@@ -311,3 +311,27 @@ TEST_CASE("two facade wings beside a tower: a resize that keeps the floors widen
   // its units cross every floor, so neither order keeps a change in one stored piece.
   CHECK_THROWS_WITH(dg::resize_grids(grammar, {{0, grid1_counts(3, 5)}, {1, {6}}}), Catch::Contains("overlap"));
 }
+
+TEST_CASE("a grid of bays and the grid of the columns it groups are not resized together", "[synthesis][grid]") {
+  dg::Model model;
+  model.mesh = dg::test::pilaster_facade(9, 2);
+  const dg::ShapeGrammar grammar = dg::test::model_grammar(std::move(model), false);
+  REQUIRE(grammar.grids.size() == 2);
+  const std::optional<dg::GroupedUnits> grouped = dg::grouped_units(grammar.grids[1].rule, grammar.grids[0].rule);
+  REQUIRE(grouped.has_value());
+  CHECK(grouped->factor == 3);
+  CHECK_FALSE(dg::grouped_units(grammar.grids[0].rule, grammar.grids[1].rule).has_value());
+  std::vector<int> columns = dg::exemplar_counts(grammar.grids[0].rule), bays = dg::exemplar_counts(grammar.grids[1].rule);
+  columns[grouped->direction] += 1;
+  bays[grouped->direction] += 1;
+  try {
+    (void)dg::resize_grids(grammar, {{0, columns}, {1, bays}});
+    FAIL("resize_grids accepted a grid of bays with the grid of its columns");
+  } catch (const dg::InputError& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("grid2 groups the units of grid1 (3 of them along direction 1 make one)"));
+  }
+  // Each alone resizes; the bays' resize is the facade of 12 columns.
+  CHECK_NOTHROW(dg::resize_grids(grammar, {{0, columns}}));
+  const dg::TriangleMesh wider = dg::resize_grids(grammar, {{1, bays}});
+  CHECK(dg::test::hausdorff_distance(wider, dg::test::pilaster_facade(12, 2)) < 1e-3 * grammar.eps);
+}

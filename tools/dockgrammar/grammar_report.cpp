@@ -201,44 +201,27 @@ std::optional<std::pair<std::size_t, std::size_t>> further_run_of(const Analysis
   return std::nullopt;
 }
 
-// A grid whose units along one direction group several units of an earlier grid's direction
-// (a larger power of its generator, grammar/grid_rules.h), its other directions that grid's.
-struct GroupedUnits {
-  std::size_t grid = 0, direction = 0;
-  int factor = 0;  // units of the earlier grid's direction per unit
-};
-
-std::optional<GroupedUnits> grouped_units_of(const AnalysisReport& report, std::size_t grid_index) {
+// For a grid whose units along one direction group those of an earlier grid's (grouped_units,
+// grammar/grid_rules.h): that grid's index and how it groups them.
+std::optional<std::pair<std::size_t, GroupedUnits>> grouped_units_of(const AnalysisReport& report, std::size_t grid_index) {
   const std::vector<GridWithPieces>& grids = report.grammar.grids;
-  const std::vector<DetectedSymmetry>& symmetries = report.symmetries.symmetries;
-  const std::vector<GridDirection>& own = grids[grid_index].rule.directions;
-  for (std::size_t g = 0; g < grid_index; ++g) {
-    const std::vector<GridDirection>& earlier = grids[g].rule.directions;
-    if (earlier.size() != own.size()) continue;
-    std::optional<std::size_t> differing;
-    bool others_alike = true;
-    for (std::size_t i = 0; i < own.size() && others_alike; ++i) {
-      if (own[i].symmetry == earlier[i].symmetry) continue;
-      others_alike = !differing && symmetries[own[i].symmetry].family == symmetries[earlier[i].symmetry].family;
-      differing = i;
-    }
-    if (others_alike && differing)
-      return GroupedUnits{g, *differing, static_cast<int>(std::lround(own[*differing].pitch / earlier[*differing].pitch))};
-  }
+  for (std::size_t g = 0; g < grid_index; ++g)
+    if (const std::optional<GroupedUnits> grouped = grouped_units(grids[grid_index].rule, grids[g].rule)) return std::pair{g, *grouped};
   return std::nullopt;
 }
 
 // For a grid of grouped units (grouped_units_of): which grid's units it groups, how many, and
 // why that grid keeps most of them once. Else empty.
 std::string grouped_units_text(const AnalysisReport& report, std::size_t grid_index) {
-  const std::optional<GroupedUnits> of = grouped_units_of(report, grid_index);
+  const auto of = grouped_units_of(report, grid_index);
   if (!of) return "";
-  const GridRule& earlier = report.grammar.grids[of->grid].rule;
-  const GridDirection& d = earlier.directions[of->direction];
+  const GridRule& earlier = report.grammar.grids[of->first].rule;
+  const GridDirection& d = earlier.directions[of->second.direction];
   return fmt::format("groups the units of {}'s direction {} by {}: {} keeps {} of its {} units in that direction once, because the "
                      "model changes every {} units (such as a pilaster after every third window column, or a bearer under every third board), while this grid's units "
                      "repeat; resizing it adds or removes whole groups. It is an alternative to {}, not resized together with it",
-                     earlier.name, of->direction + 1, of->factor, earlier.name, min_units(d), d.count, of->factor, earlier.name);
+                     earlier.name, of->second.direction + 1, of->second.factor, earlier.name, min_units(d), d.count,
+                     of->second.factor, earlier.name);
 }
 
 // For a further run (further_run_of): which grid's, and where along the motion both runs' planes
@@ -589,8 +572,9 @@ nlohmann::json analysis_json(const AnalysisReport& report) {
     if (const auto of = further_run_of(report, grids.size() - 1))
       grids.back()["further_run_of"] = {{"grid", report.grammar.grids[of->first].rule.name}, {"direction", of->second + 1}};
     if (const auto of = grouped_units_of(report, grids.size() - 1))
-      grids.back()["groups_units_of"] = {
-          {"grid", report.grammar.grids[of->grid].rule.name}, {"direction", of->direction + 1}, {"factor", of->factor}};
+      grids.back()["groups_units_of"] = {{"grid", report.grammar.grids[of->first].rule.name},
+                                         {"direction", of->second.direction + 1},
+                                         {"factor", of->second.factor}};
   }
   const bool cloud = report.prepared.model.is_point_cloud();
   return {{"model", report.prepared.model.source_path},
