@@ -38,7 +38,8 @@ void add_analyze_command(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "analyze", "Find the symmetries and grid rules of a model; write NAME.grammar.json, NAME.report.md and pictures");
+      "analyze", "Find the symmetries, grid rules, docking sites and context-free rules of a model; write "
+      "NAME.grammar.json, NAME.report.md and pictures (what each stage finds: docs/analyze.md)");
   add_model_options(*command, options->model);
   add_search_options(*command, options->search);
   command
