@@ -30,7 +30,7 @@ namespace {
 std::pair<std::string, std::vector<int>> parse_grid_counts(const std::string& text) {
   const std::size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
-    throw InputError("--grid " + text + ": expected NAME=N or NAME=NxM");
+    throw InputError("--grid " + text + ": expected NAME=N, NAME=NxM or NAME=NxMxK");
   std::vector<int> counts;
   std::size_t start = equals + 1;
   while (start <= text.size()) {
@@ -73,7 +73,7 @@ void add_resize_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("resize", "Resize grid rules of a grammar (from analyze) and write the model");
   command->add_option("GRAMMAR", options->grammar, "Grammar file written by analyze (NAME.grammar.json)")->required();
-  command->add_option("--grid", options->grids, "Grid counts as NAME=N or NAME=NxM (one per direction); repeat for several grids; grids not named keep the exemplar's counts")->required();
+  command->add_option("--grid", options->grids, "Grid counts as NAME=N, NAME=NxM or NAME=NxMxK (one per direction); repeat for several grids; grids not named keep the exemplar's counts")->required();
   command->add_option("-o,--output", options->output, "Output mesh: .obj, .ply or .glb (.ply for a grammar made from a point cloud)")->required();
   command->add_flag("--picture", options->picture, "Also write a PNG picture of the result next to it (OUT with .png)");
   command->add_flag("-q,--quiet", options->quiet, "No message on stderr (errors still go there)");
