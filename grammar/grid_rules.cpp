@@ -184,24 +184,24 @@ std::optional<RowOfParts> row_of_parts(const PreparedModel& prepared, const Symm
 // Larger powers of a direction's generator tried for a grid of grouped units.
 constexpr std::size_t kGroupingPowersTried = 4;
 
-// Whether `grouped`, a direction of the `factor`-th power of `direction`'s generator, repeats
-// where `direction` keeps most of its units once: those repeat over fewer than half of its
-// units, and the grouped units repeat over at least twice as many of the generator's pitches.
+// Whether `grouped`, a direction of the `factor`-th power of `direction`'s generator, has two
+// units or more that repeat over at least twice as many of the generator's pitches as
+// `direction`'s units do.
 bool groups_kept_units(const GridDirection& direction, const GridDirection& grouped, int factor) {
   const int repeated = direction.count - min_units(direction);
   const int grouped_repeated = factor * (grouped.count - min_units(grouped));
-  return 2 * repeated < direction.count && grouped.count >= 2 && grouped_repeated >= 2 * repeated;
+  return grouped.count >= 2 && grouped_repeated >= 2 * repeated;
 }
 
 // A direction of grid1 whose units differ every few units (a pilaster after every third window
 // column keeps all but the columns between two pilasters once) grouped into units of a larger
-// power of its generator that are all copies (bays of three columns and a pilaster), with that
-// power (of the first kGroupingPowersTried larger powers of the family that do so, the one whose
-// units repeat over the most of the generator's pitches; the smaller power on a tie).
-std::optional<std::pair<GridDirection, int>> grouped_direction(const PreparedModel& prepared, const SymmetryResult& symmetries,
-                                                               const GridDirection& direction, const DirectionSearch& search) {
-  if (!direction.whole_in_head.empty() || !direction.whole_in_tail.empty() || 2 * (direction.count - min_units(direction)) >= direction.count)
-    return std::nullopt;
+// power of its generator that are all copies (bays of three columns and a pilaster): of the
+// first kGroupingPowersTried larger powers of the family that do so, the one whose units repeat
+// over the most of the generator's pitches (the smaller power on a tie).
+std::optional<GridDirection> grouped_direction(const PreparedModel& prepared, const SymmetryResult& symmetries,
+                                               const GridDirection& direction, const DirectionSearch& search) {
+  const bool keeps_most_once = 2 * (direction.count - min_units(direction)) < direction.count;
+  if (!direction.whole_in_head.empty() || !direction.whole_in_tail.empty() || !keeps_most_once) return std::nullopt;
   const SymmetryFamily& family = symmetries.families[symmetries.symmetries[direction.symmetry].family];
   if (family.kind != "translation") return std::nullopt;
   const auto own = std::find(family.members.begin(), family.members.end(), direction.symmetry);
@@ -220,7 +220,8 @@ std::optional<std::pair<GridDirection, int>> grouped_direction(const PreparedMod
     std::pair<GridDirection, int> candidate{std::move(*grouped), larger / power};
     if (!best || repeated_pitches(candidate) > repeated_pitches(*best)) best = std::move(candidate);
   }
-  return best;
+  if (!best) return std::nullopt;
+  return std::move(best->first);
 }
 
 }  // namespace
@@ -369,7 +370,7 @@ std::vector<GridRule> find_grids(const PreparedModel& prepared, const SymmetryRe
       if (auto grouped = grouped_direction(prepared, symmetries, first.directions[i], search)) {
         GridRule grouped_grid = next_grid();
         grouped_grid.directions = first.directions;
-        grouped_grid.directions[i] = std::move(grouped->first);
+        grouped_grid.directions[i] = std::move(*grouped);
         grids.push_back(std::move(grouped_grid));
       }
   }
