@@ -156,6 +156,33 @@ TEST_CASE("up axis: an OBJ thinnest along y but not a thin wall is guessed y-up"
   fs::remove_all(folder);
 }
 
+// STL files are z-up by convention (CAD, 3D printing): the same bench as an STL file, with no
+// turn or one-sided surface to go by, stands on z, tall and narrow, and analyze stores z.
+TEST_CASE("up axis: an STL file without other cues is z-up by convention", "[tools][pictures]") {
+  const fs::path folder = dg::test::fresh_folder("dockgrammar-up-axis-stl-test");
+  const dg::TriangleMesh bench = dg::test::make_box(dg::Vec3(0, 0, 0), dg::Vec3(2, 1, 4));
+  {
+    std::ofstream stl(folder / "bench.stl");
+    stl << "solid bench\n";
+    for (std::size_t t = 0; t < bench.triangles.size(); ++t) {
+      stl << " facet normal 0 0 0\n  outer loop\n";
+      for (const dg::Vec3& p : bench.corners(t)) stl << "   vertex " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      stl << "  endloop\n endfacet\n";
+    }
+    stl << "endsolid bench\n";
+  }
+  const std::string model = (folder / "bench.stl").string();
+  REQUIRE(dg::test::run_cli("symmetry " + model + " -q --top 1 -o " + (folder / "pictures").string(), folder).status == 0);
+  CHECK(taller_than_wide(folder / "pictures" / "symmetry_01.png"));
+  const dg::test::CliRun run = dg::test::run_cli("analyze " + model + " -q --json -o " + (folder / "analysis").string(), folder);
+  REQUIRE(run.status == 0);
+  CHECK(nlohmann::json::parse(run.output)["up"] == "z");
+  std::ifstream in(folder / "analysis" / "bench.report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(report.find("Up axis z: STL files are z-up by convention") != std::string::npos);
+  fs::remove_all(folder);
+}
+
 // glTF defines +Y as up: a variant written as .glb is turned so that the exemplar's up axis
 // becomes +y, (x, y, z) -> (x, z, -y) for the z-up facade (a thin wall, guessed z-up), while
 // OBJ keeps the model's axes; an explicit --up y keeps them in the .glb too.

@@ -128,7 +128,7 @@ void add_analyze_command(CLI::App& app) {
     const std::filesystem::path grammar_path = folder / (stem + ".grammar.json");
     write_grammar(grammar_path, grammar);
     AnalysisReport report{prepared, symmetries, grammar, docking, cf_stats, grammar_timings, grammar_path,
-                          folder / (stem + ".report.md"), {}, hint, materials, up.turn, up.one_sided};
+                          folder / (stem + ".report.md"), {}, hint, materials, up};
     write_analysis_report(report);
     report.pictures = write_analysis_pictures(folder, stem, report);
     if (options->model.json)

@@ -630,19 +630,23 @@ void write_analysis_report(const AnalysisReport& report) {
   md += fmt::format("Cells match when the planes and feature lines of one, moved, lie within {:.3g}° and {:.3g} eps "
                     "of the other's (`--tolerance`).\n\n",
                     match_tolerances(report).angle_degrees, match_tolerances(report).offset_eps);
-  if (const std::optional<TurnAxis>& turn = report.up_from_turn) {
+  if (const std::optional<TurnAxis>& turn = report.up.turn) {
     const SymmetryFamily& family = report.symmetries.families[turn->family];
     md += fmt::format("Up axis {}: the axis of {} F{} ({:.3g} deg steps), whose motions map {:.1f} % of the surface onto "
                       "itself. Pictures stand the model on it and generate keeps pieces upright about it (`--up` sets "
                       "another).\n\n",
                       report.grammar.up_axis, family.kind, turn->family + 1, family.generator.angle() * 180.0 / std::numbers::pi,
                       100.0 * turn->fraction);
-  } else if (const std::optional<AxisFacing>& facing = report.up_from_facing) {
+  } else if (const std::optional<AxisFacing>& facing = report.up.one_sided) {
     const char* surface = prepared.model.is_point_cloud() ? "points face" : "surface area faces";
     md += fmt::format("Up axis {0}: {1:.1f} % of the {2} +{0} and {3:.2f} % -{0}, as in a scan seen from above or "
                       "a model without floors or undersides. Pictures stand the model on it and generate keeps pieces "
                       "upright about it (`--up` sets another).\n\n",
                       report.grammar.up_axis, 100.0 * facing->up, surface, 100.0 * facing->down);
+  } else if (report.up.stl_convention) {
+    md += "Up axis z: STL files are z-up by convention (CAD, 3D printing, Blender's STL export), and the model has no "
+          "turn or one-sided surface that says otherwise. Pictures stand the model on it and generate keeps pieces "
+          "upright about it (`--up` sets another).\n\n";
   }
   md += materials_paragraph(prepared);
   if (const std::string moved = origin_text(prepared); !moved.empty()) md += moved + "\n\n";

@@ -1,7 +1,6 @@
 #pragma once
 // What `analyze` tells the user: text summary, JSON summary, Markdown report and pictures.
 
-#include "geometry/one_sided_axis.h"
 #include "geometry/prepared_model.h"
 #include "grammar/context_free.h"
 #include "grammar/docking_sites.h"
@@ -9,7 +8,7 @@
 #include "grammar/material_hint.h"
 #include "grammar/tolerance_hint.h"
 #include "symmetry/symmetry_detection.h"
-#include "symmetry/turn_axis.h"
+#include "tools/dockgrammar/up_axis.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,8 +31,7 @@ struct AnalysisReport {
   std::vector<std::filesystem::path> pictures;  ///< PNG files written by write_analysis_pictures
   std::optional<ToleranceHint> tolerance_hint;  ///< a wider --tolerance that would help (grammar/tolerance_hint.h)
   std::optional<MaterialHint> material_hint;    ///< material matching that gives grids (grammar/material_hint.h), applied or not
-  std::optional<TurnAxis> up_from_turn;         ///< the turn grammar.up_axis was read from (no --up, not glTF)
-  std::optional<AxisFacing> up_from_facing;     ///< else how the surface faces along it (a scan seen from above)
+  UpAxisChoice up;                              ///< grammar.up_axis and what it was read from
 };
 
 /// Short readable summary for stdout.
