@@ -217,9 +217,10 @@ std::string grouped_units_text(const AnalysisReport& report, std::size_t grid_in
   if (!of) return "";
   const GridRule& earlier = report.grammar.grids[of->first].rule;
   const GridDirection& d = earlier.directions[of->second.direction];
-  return fmt::format("groups the units of {}'s direction {} by {}: {} keeps {} of its {} units in that direction once, because the "
-                     "model changes every {} units (such as a pilaster after every third window column, or a bearer under every third board), while this grid's units "
-                     "repeat; resizing it adds or removes whole groups. It is an alternative to {}, not resized together with it",
+  return fmt::format("groups the units of {}'s direction {} by {}: {} keeps {} of its {} units in that direction once, "
+                     "because the model changes every {} units (such as a pilaster after every third window column, or a "
+                     "bearer under every third board), while this grid's units repeat; resizing it adds or removes whole "
+                     "groups. It is an alternative to {}, not resized together with it",
                      earlier.name, of->second.direction + 1, of->second.factor, earlier.name, min_units(d), d.count,
                      of->second.factor, earlier.name);
 }
