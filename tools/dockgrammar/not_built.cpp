@@ -64,7 +64,8 @@ std::vector<std::string> not_built_items(const AnalysisReport& report) {
   for (const ShortRun& run : unused.short_runs)
     items.push_back(fmt::format("translation {}: the grids along it span only {:.3g} of its repeats; elsewhere along it, "
                                 "planes at its pitch cut no slabs that repeat the unit (connected geometry that does not "
-                                "repeat with the units lies across them, such as a radiator's wall brackets across its fins)",
+                                "repeat with the units lies across them, such as a radiator's wall brackets across its fins, "
+                                "or the units there differ from the repeated one by more than --tolerance)",
                                 family_text(report.symmetries, run.family), run.spanned));
   const ContextFreeStats& stats = report.context_free;
   const bool one = stats.sites_without_fit == 1;
