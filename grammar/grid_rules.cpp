@@ -202,13 +202,12 @@ std::optional<GridDirection> grouped_direction(const PreparedModel& prepared, co
                                                const GridDirection& direction, const DirectionSearch& search) {
   const bool keeps_most_once = 2 * (direction.count - min_units(direction)) < direction.count;
   if (!direction.whole_in_head.empty() || !direction.whole_in_tail.empty() || !keeps_most_once) return std::nullopt;
-  const SymmetryFamily& family = symmetries.families[symmetries.symmetries[direction.symmetry].family];
+  const DetectedSymmetry& generator = symmetries.symmetries[direction.symmetry];
+  const SymmetryFamily& family = symmetries.families[generator.family];
   if (family.kind != "translation") return std::nullopt;
-  const auto own = std::find(family.members.begin(), family.members.end(), direction.symmetry);
-  if (own == family.members.end()) return std::nullopt;
-  const int power = std::abs(family.powers[static_cast<std::size_t>(own - family.members.begin())]);
-  std::optional<std::pair<GridDirection, int>> best;
-  auto repeated_pitches = [](const std::pair<GridDirection, int>& g) { return g.second * (g.first.count - min_units(g.first)); };
+  const int power = std::abs(generator.power);
+  std::optional<GridDirection> best;
+  int best_pitches = 0;  // generator pitches the best one's repeated units span
   std::size_t tried = 0;
   for (std::size_t m : members_by_power(family)) {
     const int larger = std::abs(family.powers[m]);
@@ -217,11 +216,10 @@ std::optional<GridDirection> grouped_direction(const PreparedModel& prepared, co
     const std::size_t member = family.members[m];
     std::optional<GridDirection> grouped = grid_direction(prepared, symmetries.symmetries[member], member, search);
     if (!grouped || !groups_kept_units(direction, *grouped, larger / power)) continue;
-    std::pair<GridDirection, int> candidate{std::move(*grouped), larger / power};
-    if (!best || repeated_pitches(candidate) > repeated_pitches(*best)) best = std::move(candidate);
+    const int pitches = larger / power * (grouped->count - min_units(*grouped));
+    if (!best || pitches > best_pitches) best = std::move(grouped), best_pitches = pitches;
   }
-  if (!best) return std::nullopt;
-  return std::move(best->first);
+  return best;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "tools/dockgrammar/up_axis.h"
 
+#include <utility>
+
 namespace dg::cli {
 
 void add_up_option(CLI::App& command, std::string& axis, const std::string& fallback) {

@@ -11,7 +11,6 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 
 namespace dg::cli {
 
